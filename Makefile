@@ -1,0 +1,76 @@
+# Rason: one-command set-up, tests, demo and benchmarks on Debian 12.
+# ROS runs on Debian's /usr/bin/python3 (not a pyenv python3 first on PATH).
+SHELL := /bin/bash
+.DEFAULT_GOAL := help
+
+PY := /usr/bin/python3
+SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
+JAR := jason_lib/target/rason-jason-lib.jar
+JAVA_SOURCES := $(shell find jason_lib/src -name '*.java' 2>/dev/null)
+
+APT_PACKAGES := catkin ros-message-generation ros-message-runtime libstd-msgs-dev \
+  python3-genpy python3-rospy python3-rosmaster python3-roslaunch rosout python3-rostest \
+  python3-rosbag python3-rostopic python3-rosnode python3-rosservice python3-rosparam \
+  python3-rosmsg python3-std-msgs python3-geometry-msgs python3-nav-msgs python3-sensor-msgs \
+  python3-diagnostic-msgs python3-tf2-ros python3-cv-bridge python3-opencv python3-numpy \
+  python3-pytest librostest-dev rosbash rospack-tools ros-sensor-msgs ros-nav-msgs \
+  ros-diagnostic-msgs libsensor-msgs-dev libnav-msgs-dev libdiagnostic-msgs-dev \
+  python3-jpype default-jdk-headless maven
+
+# Environment of every ROS command: the workspace's devel space, logs in build/.
+export PYENV_VERSION := system
+export ROS_HOME := $(CURDIR)/build/ros_home
+export ROS_LOG_DIR := $(CURDIR)/build/ros_home/log
+export ROS_IP := 127.0.0.1
+ROSENV := set +u; source $(CURDIR)/devel/setup.bash; set -u;
+
+.PHONY: help setup apt jason_lib catkin test unit rostest demo bench clean
+
+help:
+	@echo "make demo   - set up, then run the example agent against a fake robot"
+	@echo "make test   - set up, then run unit tests (pytest) and rostests"
+	@echo "make setup  - install Debian packages, build jason_lib (Maven) and the catkin workspace"
+	@echo "make bench  - benchmarks (see README)"
+
+setup: apt jason_lib catkin
+
+# Idempotent: only asks apt when a package is missing.
+apt:
+	@missing=$$(dpkg-query -W -f='$${Package} $${Status}\n' $(APT_PACKAGES) 2>/dev/null \
+	    | awk '$$NF=="installed"{print $$1}' | sort | comm -13 - <(tr ' ' '\n' <<<"$(APT_PACKAGES)" | grep . | sort)); \
+	if [ -n "$$missing" ]; then \
+	  echo "apt: installing $$missing"; \
+	  $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
+	else echo "apt: all packages present"; fi
+
+jason_lib: $(JAR)
+$(JAR): jason_lib/pom.xml $(JAVA_SOURCES)
+	cd jason_lib && mvn -q -B package
+	@touch $@
+
+catkin:
+	@catkin_make -DPYTHON_EXECUTABLE=$(PY) -DCMAKE_BUILD_TYPE=Release \
+	  --cmake-args -Wno-dev > build.log 2>&1 || { tail -40 build.log; exit 1; }
+	@echo "catkin: workspace built (log: build.log)"
+
+test: setup
+	@$(MAKE) --no-print-directory unit rostest
+
+unit:
+	$(ROSENV) $(PY) -m pytest -q -p no:cacheprovider src
+
+rostest:
+	@rm -rf build/test_results
+	@$(ROSENV) catkin_make run_tests -DPYTHON_EXECUTABLE=$(PY) > build/run_tests.log 2>&1; \
+	  grep -E "^\[ROSTEST\]|^\[Testcase|^ *(SUMMARY|\* RESULT)|FAILURE|ERROR:" build/run_tests.log | grep -v "^$$" | head -200; \
+	$(ROSENV) $(PY) test/summarize_results.py build/test_results
+
+demo: setup
+	$(ROSENV) roslaunch rason demo.launch
+
+bench: setup
+	@echo "benchmarks are not written yet (issue: Benchmarks)"; exit 1
+
+clean:
+	rm -rf build devel jason_lib/target build.log

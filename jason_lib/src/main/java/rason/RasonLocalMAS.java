@@ -1,0 +1,130 @@
+package rason;
+
+import java.io.File;
+import java.io.FileInputStream;
+import java.io.InputStream;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.logging.Handler;
+import java.util.logging.Level;
+import java.util.logging.Logger;
+
+import jason.JasonException;
+import jason.asSyntax.directives.DirectiveProcessor;
+import jason.asSyntax.directives.Include;
+import jason.infra.local.LocalAgArch;
+import jason.infra.local.RunLocalMAS;
+import jason.mas2j.AgentParameters;
+import jason.util.Config;
+
+/**
+ * Jason's local infrastructure, headless and embedded: loads a .mas2j without
+ * GUI, RMI or System.exit, gives every agent a {@link RosAgArch} (also when the
+ * project names no architecture) and routes Jason's log to rosout.
+ */
+public class RasonLocalMAS extends RunLocalMAS {
+
+    public static final String ARCH_CLASS = RosAgArch.class.getName();
+
+    /**
+     * Parses the project file and fixes its agents' sources relative to it.
+     *
+     * @throws Exception with a message saying what is wrong with the file
+     */
+    public void load(String mas2jPath) throws Exception {
+        addInitArg("no-rmi", true);
+        addInitArg("no-mbean", true);
+        addInitArg("no-mindinspector", true);
+        Config.get().put(Config.START_WEB_MI, "false");
+        setupLogger();
+
+        File file = new File(mas2jPath).getCanonicalFile();
+        if (!file.isFile())
+            throw new JasonException("project file not found: " + mas2jPath);
+        try (InputStream in = new FileInputStream(file)) {
+            project = new jason.mas2j.parser.mas2j(in).mas();
+        } catch (jason.mas2j.parser.ParseException | jason.mas2j.parser.TokenMgrError e) {
+            throw new JasonException("cannot parse " + file + ": " + e.getMessage());
+        }
+        project.setProjectFile(file);
+        project.setDirectory(file.getParent());
+        project.setupDefault();
+        project.getSourcePaths().setRoot(file.getParent());
+        project.registerDirectives();
+        ((Include) DirectiveProcessor.getDirective("include")).setSourcePath(project.getSourcePaths());
+
+        for (AgentParameters ap : project.getAgents()) {
+            // .asl paths in a .mas2j are relative to the project file, not to the working directory
+            String src = ap.getSource() == null ? ap.name + ".asl" : ap.getSource().toString();
+            if (src.startsWith("file:"))
+                src = src.substring("file:".length());
+            File asl = new File(src);
+            if (!asl.isAbsolute())
+                asl = new File(file.getParentFile(), src);
+            if (!asl.isFile())
+                throw new JasonException("agent '" + ap.name + "': source file not found: " + asl);
+            ap.setSource(asl.getPath());
+            if (!ap.getAgArchClasses().contains(ARCH_CLASS))
+                ap.addArchClass(ARCH_CLASS);
+        }
+        project.fixAgentsSrc();
+    }
+
+    /** Agents of the project, as loaded, before they are created. */
+    public List<String> agentDeclarations() {
+        List<String> names = new ArrayList<>();
+        for (AgentParameters ap : project.getAgents())
+            names.add(ap.name + (ap.getNbInstances() > 1 ? " #" + ap.getNbInstances() : ""));
+        return names;
+    }
+
+    /** Number of agents actually created (agents whose source fails to parse are not). */
+    public int createdAgentCount() {
+        return createdAgents.size();
+    }
+
+    @Override
+    public synchronized void setupLogger(String confFile) {
+        Logger root = Logger.getLogger("");
+        for (Handler h : root.getHandlers())
+            root.removeHandler(h);
+        root.addHandler(new RosLogHandler());
+        root.setLevel(Level.INFO);
+    }
+
+    /** .stopMAS: ask the rospy node to shut down (which stops the agents) instead of System.exit. */
+    @Override
+    public void finish(int deadline, boolean stopJVM, int exitValue) {
+        RosConnector c = RasonHub.get().getConnector();
+        if (c != null)
+            c.stopRequested(exitValue);
+    }
+
+    /**
+     * Stops every agent and waits for their threads.
+     *
+     * @return true if all agent threads ended within timeoutMillis
+     */
+    public boolean stopAgents(long timeoutMillis) throws InterruptedException {
+        isRunning = false;
+        List<LocalAgArch> all = new ArrayList<>(getAgs().values());
+        for (LocalAgArch ag : all) {
+            try {
+                ag.stopAg();
+            } catch (Exception e) {
+                // keep stopping the others
+            }
+            delAg(ag.getAgName());
+        }
+        long deadline = System.currentTimeMillis() + timeoutMillis;
+        boolean allEnded = true;
+        for (LocalAgArch ag : all) {
+            Thread t = ag.getThread();
+            if (t == null)
+                continue;
+            t.join(Math.max(1, deadline - System.currentTimeMillis()));
+            allEnded &= !t.isAlive();
+        }
+        return allEnded;
+    }
+}

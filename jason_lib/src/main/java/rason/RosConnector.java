@@ -1,0 +1,25 @@
+package rason;
+
+/**
+ * What the rospy process does on behalf of the agents. Implemented in Python
+ * (JPype {@code @JImplements}); every method is called on an agent's thread, so
+ * implementations must return quickly and never block.
+ */
+public interface RosConnector {
+
+    /** Returned by {@link #publishAction} when no node subscribes to jason/action. */
+    long NO_DECOMPOSER = -1L;
+
+    /**
+     * Publishes a rason_msgs/Action on jason/action.
+     *
+     * @return the ROS time of publication in nanoseconds, or {@link #NO_DECOMPOSER}
+     */
+    long publishAction(String agent, int actionId, String action, String[] parameters);
+
+    /** Writes one line to rosout; level is a java.util.logging level value. */
+    void log(int level, String agent, String message);
+
+    /** An agent ran .stopMAS: the node should shut down and exit with exitValue. */
+    void stopRequested(int exitValue);
+}
