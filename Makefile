@@ -64,7 +64,7 @@ rostest:
 	@rm -rf build/test_results
 	@$(ROSENV) catkin_make run_tests -DPYTHON_EXECUTABLE=$(PY) > build/run_tests.log 2>&1; \
 	  grep -E "^\[ROSTEST\]|^\[Testcase|^ *(SUMMARY|\* RESULT)|FAILURE|ERROR:" build/run_tests.log | grep -v "^$$" | head -200; \
-	$(ROSENV) $(PY) test/summarize_results.py build/test_results
+	$(ROSENV) $(PY) src/rason/test/summarize_results.py build/test_results
 
 demo: setup
 	$(ROSENV) roslaunch rason demo.launch

@@ -8,6 +8,7 @@ import logging
 import os
 import sys
 import threading
+import time
 
 import rosgraph
 import rospy
@@ -56,6 +57,7 @@ class RasonMasNode(object):
             fail=lambda action, reason: self._hub.actionFeedback(action.agent, action.action_id, reason),
             connect_wait=connect_wait)
         self._outbox_wakeup = threading.Event()
+        self._connect_wait = connect_wait
         self._hub.setConnector(_make_connector(self))
 
     # ---- life cycle -----------------------------------------------------------------
@@ -80,9 +82,13 @@ class RasonMasNode(object):
     def start(self):
         """Subscribe to the jason/* topics and start the agents' reasoning."""
         self._outbox.refresh_listed()
-        rospy.Subscriber('jason/event', Event, self._on_event, queue_size=None, tcp_nodelay=True)
+        events_sub = rospy.Subscriber('jason/event', Event, self._on_event,
+                                      queue_size=None, tcp_nodelay=True)
         rospy.Subscriber('jason/perception', Perception, self._on_perception,
                          queue_size=100, tcp_nodelay=True)
+        # Feedback from a decomposer that is not connected yet would be lost:
+        # let the running ones connect before the agents act.
+        self._wait_for_publishers(events_sub, self._connect_wait)
         threading.Thread(target=self._outbox_loop, name='rason_outbox', daemon=True).start()
         rospy.Timer(rospy.Duration(0.05), self._on_tick)
         self._mas.start()
@@ -145,6 +151,19 @@ class RasonMasNode(object):
             if topic == self._action_topic:
                 return len(nodes)
         return 0
+
+    def _wait_for_publishers(self, subscriber, timeout):
+        topic = subscriber.resolved_name
+        deadline = time.monotonic() + timeout
+        while not rospy.is_shutdown():
+            try:
+                publishers, _, _ = self._master.getSystemState()
+            except Exception:
+                return
+            listed = sum(len(nodes) for t, nodes in publishers if t == topic)
+            if subscriber.get_num_connections() >= listed or time.monotonic() > deadline:
+                return
+            threading.Event().wait(0.02)
 
     def _outbox_loop(self):
         # Sends actions held back while decomposers connect; also refreshes the

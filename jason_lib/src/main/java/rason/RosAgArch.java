@@ -13,6 +13,7 @@ import jason.architecture.AgArch;
 import jason.asSemantics.ActionExec;
 import jason.asSyntax.ASSyntax;
 import jason.asSyntax.Literal;
+import jason.asSyntax.NumberTerm;
 import jason.asSyntax.StringTerm;
 import jason.asSyntax.Structure;
 import jason.asSyntax.Term;
@@ -99,14 +100,32 @@ public class RosAgArch extends AgArch {
             p.deadlineNanos = stamp + timeout;
     }
 
-    /** Action parameters as text: strings without their quotes, other terms in Jason syntax. */
-    static String[] parametersOf(Structure term) {
+    /**
+     * Action parameters as text: numbers plainly ("-0.3", "1"), strings without
+     * their quotes, other terms in Jason syntax.
+     */
+    public static String[] parametersOf(Structure term) {
         String[] out = new String[term.getArity()];
         for (int i = 0; i < out.length; i++) {
             Term t = term.getTerm(i);
-            out[i] = t.isString() ? ((StringTerm) t).getString() : t.toString();
+            if (t.isString())
+                out[i] = ((StringTerm) t).getString();
+            else
+                out[i] = t.isNumeric() && t.isGround() ? numberText((NumberTerm) t) : t.toString();
         }
         return out;
+    }
+
+    private static String numberText(NumberTerm n) {
+        double v;
+        try {
+            v = n.solve();
+        } catch (Exception e) {
+            return n.toString();
+        }
+        if (v == Math.rint(v) && !Double.isInfinite(v) && Math.abs(v) < 1e15)
+            return Long.toString((long) v);
+        return Double.toString(v);
     }
 
     void feedback(int actionId, String result) {
@@ -169,7 +188,7 @@ public class RosAgArch extends AgArch {
     }
 
     /** The reason as it appears among the failure event's annotations. */
-    static Literal reasonLiteral(String result) {
+    public static Literal reasonLiteral(String result) {
         try {
             Literal l = Perceptions.parse(result);
             if (!l.hasAnnot())
