@@ -34,6 +34,10 @@ class LogWatcher(object):
             time.sleep(0.02)
         return False
 
+    def clear(self):
+        with self._cond:
+            del self._lines[:]
+
     def lines(self, pattern=None):
         with self._cond:
             return [l for l in self._lines if pattern is None or re.search(pattern, l[3])]

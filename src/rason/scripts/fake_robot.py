@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""A scripted stand-in for a robot's decomposer and synthesizer, for rostests.
+"""A scripted stand-in for a robot's decomposer and synthesizer, for rostests and the demo.
 
 ~results (dict, {}): action name -> feedback result ("OK", "no_progress", ...);
     actions not listed are dropped, as a decomposer drops what it does not handle.

@@ -1,0 +1,4 @@
+/* Plans */
+
++temp(S, V)[source(percept)] <- .print("+temp ", S, " ", V).
+-temp(S, V)[source(percept)] <- .print("-temp ", S, " ", V).
