@@ -58,7 +58,7 @@ test: setup
 	@$(MAKE) --no-print-directory unit rostest
 
 unit:
-	$(ROSENV) $(PY) -m pytest -q -p no:cacheprovider src
+	$(ROSENV) $(PY) -m pytest -q src
 
 rostest:
 	@rm -rf build/test_results
