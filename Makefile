@@ -15,7 +15,7 @@ APT_PACKAGES := catkin ros-message-generation ros-message-runtime libstd-msgs-de
   python3-diagnostic-msgs python3-tf2-ros python3-cv-bridge python3-opencv python3-numpy \
   python3-pytest librostest-dev rosbash rospack-tools ros-sensor-msgs ros-nav-msgs \
   ros-diagnostic-msgs libsensor-msgs-dev libnav-msgs-dev libdiagnostic-msgs-dev \
-  python3-jpype default-jdk-headless maven
+  python3-jpype default-jdk-headless maven build-essential cmake
 
 # Environment of every ROS command: the workspace's devel space, logs in build/.
 export PYENV_VERSION := system
@@ -41,7 +41,7 @@ apt:
 	if [ -n "$$missing" ]; then \
 	  echo "apt: installing $$missing"; \
 	  $(SUDO) apt-get update -qq && \
-	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing; \
 	else echo "apt: all packages present"; fi
 
 jason_lib: $(JAR)
