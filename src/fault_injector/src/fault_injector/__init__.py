@@ -1,0 +1,1 @@
+"""Fault injector service of Rason (thesis §6.3)."""

@@ -1,0 +1,221 @@
+"""Fault models of the fault injector (thesis §6.3), free of ROS.
+
+Everything here works on plain numbers and tuples so it can be unit-tested
+without a ROS master; :mod:`fault_injector.node` converts messages.
+
+Faults:
+
+``left_actuator`` / ``right_actuator``
+    Thesis Eq. 6.2 (angular velocity) and Eq. 6.3 (linear velocity).
+``both_actuators``
+    Every twist component is zero: the robot cannot move.
+``odometry``
+    The odometry passed on is frozen at the last value received before the
+    fault was injected.
+``none``
+    Pass-through. Requested as ``cancel`` (or ``none``).
+"""
+import math
+
+LEFT_ACTUATOR = 'left_actuator'
+RIGHT_ACTUATOR = 'right_actuator'
+BOTH_ACTUATORS = 'both_actuators'
+ODOMETRY = 'odometry'
+NONE = 'none'
+CANCEL = 'cancel'
+
+#: Faults that can be active, in the order they are listed to users.
+FAULTS = (LEFT_ACTUATOR, RIGHT_ACTUATOR, BOTH_ACTUATORS, ODOMETRY)
+#: Every string accepted by the ``inject_fault`` service.
+VALID_REQUESTS = FAULTS + (CANCEL, NONE)
+
+
+class UnknownFaultError(ValueError):
+    """Raised by :func:`parse_fault` for a request that names no fault."""
+
+
+def valid_requests_text():
+    """Human-readable list of what the service accepts.
+
+    :return: e.g. ``"left_actuator, ..., odometry, cancel (alias: none)"``
+    """
+    return '%s, %s (alias: %s)' % (', '.join(FAULTS), CANCEL, NONE)
+
+
+def parse_fault(request):
+    """Validate a fault request and return the fault it makes active.
+
+    Surrounding blanks and letter case are ignored, since the request is often
+    typed by hand.
+
+    :param request: the ``fault`` field of the service request
+    :return: one of :data:`FAULTS`, or :data:`NONE` for ``cancel``/``none``
+    :raises UnknownFaultError: if ``request`` is not in :data:`VALID_REQUESTS`
+    """
+    name = str(request).strip().lower()
+    if name in (CANCEL, NONE):
+        return NONE
+    if name in FAULTS:
+        return name
+    raise UnknownFaultError('unknown fault %r; valid faults: %s'
+                            % (request, valid_requests_text()))
+
+
+def has_nan(values):
+    """Tell whether any of the numbers is NaN.
+
+    :param values: iterable of floats
+    :return: True if at least one is NaN
+    """
+    return any(math.isnan(v) for v in values)
+
+
+def transform_twist(fault, linear, angular):
+    """Apply an actuator fault to a velocity command.
+
+    For ``left_actuator``/``right_actuator``, with ``x_lin = linear[0]``:
+
+    * Eq. 6.2: ``angular.z = x_lin`` if (left and x_lin > 0) or (right and
+      x_lin < 0); ``angular.z = -x_lin`` if (right and x_lin > 0) or (left and
+      x_lin < 0). So a left fault always yaws positive (left) and a right fault
+      negative, by ``|x_lin|``, replacing the commanded yaw rate.
+    * Eq. 6.3: ``linear.x = x_lin / 2`` (only one wheel pushes).
+
+    With ``x_lin == 0`` neither case of Eq. 6.2 applies, so the commanded
+    ``angular.z`` is left unchanged (a turn on the spot stays a turn on the
+    spot). NaN compares false too, so it behaves the same way and is passed on.
+    The other components (unused by a differential drive) are left unchanged.
+
+    :param fault: the active fault (one of :data:`FAULTS` or :data:`NONE`)
+    :param linear: ``(x, y, z)`` linear velocity commanded
+    :param angular: ``(x, y, z)`` angular velocity commanded
+    :return: ``(linear, angular)``, each a 3-tuple of floats, to send to the base
+    """
+    linear = tuple(float(v) for v in linear)
+    angular = tuple(float(v) for v in angular)
+    if fault == BOTH_ACTUATORS:
+        return (0.0, 0.0, 0.0), (0.0, 0.0, 0.0)
+    if fault not in (LEFT_ACTUATOR, RIGHT_ACTUATOR):
+        return linear, angular  # none and odometry: commands are untouched
+    x_lin = linear[0]
+    left = fault == LEFT_ACTUATOR
+    right = not left
+    yaw = angular[2]
+    if (left and x_lin > 0) or (right and x_lin < 0):
+        yaw = x_lin
+    elif (right and x_lin > 0) or (left and x_lin < 0):
+        yaw = -x_lin
+    return (x_lin / 2.0, linear[1], linear[2]), (angular[0], angular[1], yaw)
+
+
+class OdometryFreezer(object):
+    """Remembers the last odometry and, while frozen, keeps returning it.
+
+    Values are opaque (a message, a tuple...): the freezer only stores them.
+    """
+
+    def __init__(self):
+        self._last = None
+        self._frozen = None
+        self._active = False
+
+    @property
+    def active(self):
+        """True while freezing."""
+        return self._active
+
+    @property
+    def last(self):
+        """The last value received, or None."""
+        return self._last
+
+    @property
+    def frozen(self):
+        """The value being repeated, or None (not freezing, or nothing received yet)."""
+        return self._frozen
+
+    def freeze(self):
+        """Start freezing at the last value received.
+
+        Freezing again while already frozen keeps the original value, so a
+        repeated request does not "refresh" the stuck odometry.
+        """
+        if not self._active:
+            self._active = True
+            self._frozen = self._last
+
+    def release(self):
+        """Stop freezing: values pass through again."""
+        self._active = False
+        self._frozen = None
+
+    def filter(self, value):
+        """Record a new value and return the one to pass on.
+
+        :param value: the odometry just received
+        :return: ``value`` when not freezing; otherwise the frozen value (the
+            first value received after the fault if none had arrived before)
+        """
+        self._last = value
+        if not self._active:
+            return value
+        if self._frozen is None:
+            self._frozen = value
+        return self._frozen
+
+
+class FaultState(object):
+    """The active fault and what it does to commands and odometry.
+
+    Not thread-safe: the node serialises calls with a lock.
+
+    :param initial: the fault active at start-up (any of :data:`VALID_REQUESTS`)
+    :raises UnknownFaultError: if ``initial`` is not valid
+    """
+
+    def __init__(self, initial=NONE):
+        self._fault = NONE
+        self.odometry = OdometryFreezer()
+        parse_fault(initial)  # raises, where request() would only report
+        self.request(initial)
+
+    @property
+    def fault(self):
+        """The active fault: one of :data:`FAULTS` or :data:`NONE`."""
+        return self._fault
+
+    def request(self, name):
+        """Handle a service request.
+
+        :param name: the requested fault, ``cancel`` or ``none``
+        :return: ``(ok, message)``; on failure the state is unchanged
+        """
+        try:
+            fault = parse_fault(name)
+        except UnknownFaultError as e:
+            return False, '%s; active fault unchanged: %s' % (e, self._fault)
+        self._fault = fault
+        if fault == ODOMETRY:
+            self.odometry.freeze()
+        else:
+            self.odometry.release()
+        if fault == NONE:
+            return True, 'no active fault (pass-through)'
+        return True, 'active fault: %s' % fault
+
+    def twist(self, linear, angular):
+        """Transform a velocity command under the active fault.
+
+        :param linear: ``(x, y, z)`` commanded linear velocity
+        :param angular: ``(x, y, z)`` commanded angular velocity
+        :return: ``(linear, angular)`` for the base
+        """
+        return transform_twist(self._fault, linear, angular)
+
+    def odom(self, value):
+        """Pass an odometry value through the freezer.
+
+        :param value: the odometry just received (opaque)
+        :return: the value to publish
+        """
+        return self.odometry.filter(value)
