@@ -1,0 +1,366 @@
+"""Motion decomposition core (thesis §5.3, §6.3): plain Python, no ROS.
+
+Turns the agents' ``move(Metres)`` and ``turn(Degrees)`` actions into velocity
+commands and decides, from odometry poses, when a motion has ended and how.
+
+SIGN CONVENTION OF ``turn`` -- read this first
+    ``turn(D)`` with D > 0 turns the robot RIGHT (clockwise seen from above),
+    i.e. it commands a NEGATIVE ``angular.z``; D < 0 turns LEFT (positive
+    ``angular.z``). This is the opposite of the ROS convention (REP 103, where a
+    positive angle is counter-clockwise) on purpose: the agent programs call
+    ``turn(Deg)`` with the angle at which they see the other robot, and that
+    angle is negative when the robot is on the left. So ``turn(Deg)`` faces it.
+
+``move(M)`` drives straight ahead for M > 0 and backwards for M < 0.
+
+Poses are ``(x, y, yaw)`` tuples (metres, metres, radians, ROS frame
+conventions); times are floats in seconds. The node feeds ROS time, so
+simulated time works.
+
+Results (``parameters[0]`` of the ``action_feedback`` event):
+
+``OK``
+    the travelled distance (straight line from the start pose) or the turned
+    angle (unwrapped, so ``turn(360)`` works) reached the request.
+``no_progress``
+    the pose has not changed (< 1 mm and < 0.1 degree) for more than
+    ``no_progress_time`` seconds while motion was wanted. This also covers "no
+    odometry at all": without a start pose no motion is commanded (we could not
+    tell how far the robot went) and the action fails ``no_progress`` after
+    ``no_progress_time``.
+``bad_move``
+    during a move, the cosine between the planned direction (start heading,
+    reversed for a backward move) and the displacement start->current fell
+    below ``bad_move_min_cos``; checked once the robot moved at least
+    ``bad_move_min_distance`` metres, before which the direction is noise.
+``bad_parameters``
+    missing, extra, non-numeric or non-finite parameter; fails at once.
+``timeout``
+    the motion ran ``max_duration`` seconds without another result.
+``shutdown``
+    the node stopped before the motion ended.
+"""
+import math
+import re
+from collections import deque, namedtuple
+
+MOVE = 'move'
+TURN = 'turn'
+#: The action functors this decomposer executes; all others belong to other decomposers.
+MOTION_ACTIONS = (MOVE, TURN)
+
+OK = 'OK'
+NO_PROGRESS = 'no_progress'
+BAD_MOVE = 'bad_move'
+BAD_PARAMETERS = 'bad_parameters'
+TIMEOUT = 'timeout'
+SHUTDOWN = 'shutdown'
+
+#: Pose changes below both of these count as "no progress".
+PROGRESS_DISTANCE = 0.001          # metres
+PROGRESS_ANGLE = math.radians(0.1)
+
+#: Default tuning; speeds like a TurtleBot 2 (Kobuki max 0.7 m/s, comfortable 0.2 m/s).
+DEFAULTS = dict(
+    linear_speed=0.2,           # m/s
+    angular_speed=0.5,          # rad/s
+    no_progress_time=1.0,       # s
+    bad_move_min_distance=0.05,  # m
+    bad_move_min_cos=0.99,      # cos(8.1 degrees)
+    max_duration=50.0,          # s; below the bridge's 60 s action timeout, so the agent gets this reason
+)
+
+#: A requested motion: ``kind`` is MOVE (``amount`` in metres) or TURN (``amount`` in degrees).
+Motion = namedtuple('Motion', 'kind amount')
+
+#: What to publish on jason/event: parameters are ``[result, str(action_id)]``.
+Feedback = namedtuple('Feedback', 'agent action_id result')
+
+# A plain decimal number, as Jason prints it ("1", "-0.3", "1.0E-4"); float()
+# alone would also take "nan", "inf", "1_0" and surrounding blanks.
+_NUMBER = re.compile(r'[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\Z')
+
+
+class UnknownAction(ValueError):
+    """The action is not a motion; another decomposer may handle it."""
+
+
+class BadParameters(ValueError):
+    """The parameters of a motion action are unusable; the message says why."""
+
+
+def is_motion(action):
+    """True for the action functors this decomposer handles.
+
+    :param action: action functor, e.g. ``move``
+    """
+    return action in MOTION_ACTIONS
+
+
+def parse_motion(action, parameters):
+    """Read a ``move``/``turn`` action.
+
+    :param action: the functor, ``move`` or ``turn``
+    :param parameters: the action's arguments as text; exactly one finite number
+    :rtype: Motion
+    :raises UnknownAction: the functor is not a motion
+    :raises BadParameters: wrong arity, not a number, NaN or infinite
+    """
+    if not is_motion(action):
+        raise UnknownAction('%r is not a motion action (only %s)' % (action, ', '.join(MOTION_ACTIONS)))
+    parameters = list(parameters)
+    if len(parameters) != 1:
+        raise BadParameters('%s needs exactly one numeric parameter, got %d: %r'
+                            % (action, len(parameters), parameters))
+    text = parameters[0]
+    if not isinstance(text, str) or not _NUMBER.match(text):
+        raise BadParameters('%s(%r): the parameter is not a number' % (action, text))
+    amount = float(text)
+    if not math.isfinite(amount):  # e.g. "1e999"
+        raise BadParameters('%s(%r): the parameter is not finite' % (action, text))
+    return Motion(action, amount)
+
+
+def wrap_angle(angle):
+    """The same angle in [-pi, pi).
+
+    :param angle: radians
+    """
+    return (angle + math.pi) % (2.0 * math.pi) - math.pi
+
+
+def yaw_from_quaternion(x, y, z, w):
+    """Rotation about z of a quaternion (the robot's heading in the plane).
+
+    :param x: quaternion x
+    :param y: quaternion y
+    :param z: quaternion z
+    :param w: quaternion w
+    :returns: radians in [-pi, pi]
+    """
+    return math.atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z))
+
+
+def is_finite_pose(pose):
+    """True when ``pose`` is an ``(x, y, yaw)`` of finite numbers.
+
+    :param pose: ``(x, y, yaw)``
+    """
+    return all(math.isfinite(v) for v in pose)
+
+
+def check_options(options):
+    """Validate monitor tuning; returns the full option dict (defaults filled in).
+
+    :param options: dict with keys of :data:`DEFAULTS`
+    :raises ValueError: unknown key or out-of-range value
+    """
+    unknown = set(options) - set(DEFAULTS)
+    if unknown:
+        raise ValueError('unknown motion option(s): %s' % ', '.join(sorted(unknown)))
+    full = dict(DEFAULTS)
+    full.update((k, float(v)) for k, v in options.items())
+    for key in ('linear_speed', 'angular_speed', 'no_progress_time', 'max_duration'):
+        if not (full[key] > 0 and math.isfinite(full[key])):
+            raise ValueError('%s must be a positive number, got %r' % (key, full[key]))
+    if not 0 <= full['bad_move_min_distance'] < float('inf'):
+        raise ValueError('bad_move_min_distance must be >= 0, got %r' % full['bad_move_min_distance'])
+    if not -1 <= full['bad_move_min_cos'] <= 1:
+        raise ValueError('bad_move_min_cos must be in [-1, 1], got %r' % full['bad_move_min_cos'])
+    return full
+
+
+class MotionMonitor(object):
+    """Runs one motion: what to command, and when and how it ends.
+
+    Call :meth:`update` on every control cycle with the latest pose (the same
+    pose again when no new odometry came, ``None`` while there is none), then
+    publish :meth:`command`.
+
+    :param motion: the :class:`Motion` to perform
+    :param start_pose: ``(x, y, yaw)`` when the motion starts, or ``None`` when
+        no odometry was received yet (the first pose given to :meth:`update`
+        then becomes the start pose)
+    :param now: start time, seconds
+    :param options: tuning, keys of :data:`DEFAULTS` (speeds, thresholds, ``max_duration``)
+    """
+
+    def __init__(self, motion, start_pose, now, **options):
+        opts = check_options(options)
+        self.motion = motion
+        self.linear_speed = opts['linear_speed']
+        self.angular_speed = opts['angular_speed']
+        self.no_progress_time = opts['no_progress_time']
+        self.bad_move_min_distance = opts['bad_move_min_distance']
+        self.bad_move_min_cos = opts['bad_move_min_cos']
+        self.max_duration = opts['max_duration']
+        self.started = float(now)
+        self.start_pose = None
+        #: distance start->current (move) or signed unwrapped yaw change (turn, radians)
+        self.travelled = 0.0
+        self.turned = 0.0
+        self.result = None
+        self._prev_yaw = None
+        self._still_pose = None
+        self._still_since = self.started
+        if start_pose is not None and is_finite_pose(start_pose):
+            self._begin(start_pose, now)
+
+    @property
+    def done(self):
+        """True once a result is known."""
+        return self.result is not None
+
+    def _begin(self, pose, now):
+        self.start_pose = tuple(float(v) for v in pose)
+        self._prev_yaw = self.start_pose[2]
+        self._still_pose = self.start_pose
+        # The robot is only commanded from now on, so progress is expected from now.
+        self._still_since = now
+
+    def _direction(self):
+        # +1/-1: sign of the wanted speed; a positive turn is clockwise (negative yaw rate).
+        sign = 1.0 if self.motion.amount >= 0 else -1.0
+        return sign if self.motion.kind == MOVE else -sign
+
+    def update(self, pose, now):
+        """Take the latest odometry pose; returns ``None`` while running, else the result.
+
+        Once ended, the same result is returned again.
+
+        :param pose: ``(x, y, yaw)``, or ``None`` (no odometry yet); non-finite poses are ignored
+        :param now: current time, seconds
+        :returns: ``None``, ``OK``, ``no_progress``, ``bad_move`` or ``timeout``
+        """
+        if self.result is not None:
+            return self.result
+        if self.motion.amount == 0:  # nothing to do, with or without odometry
+            return self._end(OK)
+        if pose is not None and not is_finite_pose(pose):
+            pose = None
+        if pose is not None:
+            if self.start_pose is None:
+                self._begin(pose, now)
+            result = self._track(pose, now)
+            if result is not None:
+                return self._end(result)
+        if now - self._still_since > self.no_progress_time:
+            return self._end(NO_PROGRESS)
+        if now - self.started >= self.max_duration:
+            return self._end(TIMEOUT)
+        return None
+
+    def _track(self, pose, now):
+        x, y, yaw = pose
+        sx, sy, syaw = self._still_pose
+        if (math.hypot(x - sx, y - sy) >= PROGRESS_DISTANCE
+                or abs(wrap_angle(yaw - syaw)) >= PROGRESS_ANGLE):
+            self._still_pose = (x, y, yaw)
+            self._still_since = now
+        # Summing small wrapped steps unwraps the yaw (needs < 180 degrees per odometry step).
+        self.turned += wrap_angle(yaw - self._prev_yaw)
+        self._prev_yaw = yaw
+
+        x0, y0, yaw0 = self.start_pose
+        dx, dy = x - x0, y - y0
+        self.travelled = math.hypot(dx, dy)
+        if self.motion.kind == MOVE:
+            if self.travelled >= max(self.bad_move_min_distance, 1e-9):
+                d = self._direction()
+                cos = d * (dx * math.cos(yaw0) + dy * math.sin(yaw0)) / self.travelled
+                if cos < self.bad_move_min_cos:
+                    return BAD_MOVE
+            if self.travelled >= abs(self.motion.amount):
+                return OK
+        else:
+            if self.turned * self._direction() >= math.radians(abs(self.motion.amount)):
+                return OK
+        return None
+
+    def _end(self, result):
+        self.result = result
+        return result
+
+    def command(self):
+        """The velocity to command now: ``(linear_x, angular_z)`` in m/s and rad/s.
+
+        Zero before the start pose is known (no odometry, no driving blind) and after the end.
+        """
+        if self.result is not None or self.start_pose is None or self.motion.amount == 0:
+            return (0.0, 0.0)
+        if self.motion.kind == MOVE:
+            return (self._direction() * self.linear_speed, 0.0)
+        return (0.0, self._direction() * self.angular_speed)
+
+
+_Request = namedtuple('_Request', 'agent action_id motion')
+
+
+class MotionScheduler(object):
+    """One motion at a time per robot; later motions wait in a FIFO queue.
+
+    :param options: :class:`MotionMonitor` tuning, keys of :data:`DEFAULTS`
+    :raises ValueError: bad options
+    """
+
+    def __init__(self, **options):
+        self.options = check_options(options)
+        self._queue = deque()
+        self.current = None     # (request, MotionMonitor) or None
+
+    @property
+    def pending(self):
+        """Number of motions waiting behind the running one."""
+        return len(self._queue)
+
+    def submit(self, agent, action_id, action, parameters):
+        """Queue a motion action.
+
+        :param agent: the acting agent, echoed in the feedback
+        :param action_id: echoed in the feedback
+        :param action: ``move`` or ``turn``
+        :param parameters: the action's arguments as text
+        :returns: a :class:`Feedback` to publish at once (``bad_parameters``), or ``None`` when queued
+        :raises UnknownAction: not a motion action (the caller should ignore it)
+        """
+        try:
+            motion = parse_motion(action, parameters)
+        except BadParameters:
+            return Feedback(agent, action_id, BAD_PARAMETERS)
+        self._queue.append(_Request(agent, action_id, motion))
+        return None
+
+    def step(self, pose, now):
+        """One control cycle.
+
+        Starts the next queued motion when idle; at most one motion ends per
+        cycle, so the stop command of an end is never skipped.
+
+        :param pose: latest ``(x, y, yaw)`` or ``None``
+        :param now: current time, seconds
+        :returns: ``(command, feedback)``: ``command`` is ``(linear_x, angular_z)`` to
+            publish, ``(0.0, 0.0)`` when a motion just ended, ``None`` when idle (publish
+            nothing, other nodes may drive); ``feedback`` is a :class:`Feedback` or ``None``
+        """
+        if self.current is None:
+            if not self._queue:
+                return None, None
+            request = self._queue.popleft()
+            self.current = (request, MotionMonitor(request.motion, pose, now, **self.options))
+        request, monitor = self.current
+        result = monitor.update(pose, now)
+        if result is None:
+            return monitor.command(), None
+        self.current = None
+        return (0.0, 0.0), Feedback(request.agent, request.action_id, result)
+
+    def cancel_all(self, reason=SHUTDOWN):
+        """End the running and all queued motions; returns their feedback, oldest first.
+
+        :param reason: the failure reason to report
+        """
+        requests = [self.current[0]] if self.current is not None else []
+        requests.extend(self._queue)
+        self.current = None
+        self._queue.clear()
+        return [Feedback(r.agent, r.action_id, reason) for r in requests]
