@@ -99,7 +99,7 @@ class RasonMasNode(object):
             return
         self._stopping = True
         self._hub.shutdown('shutdown')
-        threading.Event().wait(grace)
+        time.sleep(grace)
         if self._mas is not None:
             ended = self._mas.stopAgents(int(join_timeout * 1000))
             if not ended:
@@ -163,7 +163,7 @@ class RasonMasNode(object):
             listed = sum(len(nodes) for t, nodes in publishers if t == topic)
             if subscriber.get_num_connections() >= listed or time.monotonic() > deadline:
                 return
-            threading.Event().wait(0.02)
+            time.sleep(0.02)
 
     def _outbox_loop(self):
         # Sends actions held back while decomposers connect; also refreshes the
@@ -173,7 +173,7 @@ class RasonMasNode(object):
             self._outbox_wakeup.clear()
             if woken or self._outbox.has_held():
                 while self._outbox.flush() and not rospy.is_shutdown():
-                    threading.Event().wait(0.01)
+                    time.sleep(0.01)
             else:
                 self._outbox.refresh_listed()
 

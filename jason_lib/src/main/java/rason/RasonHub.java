@@ -162,7 +162,7 @@ public final class RasonHub {
         logger.log(level, message);
     }
 
-    /** Agent names among a collection of logger-name suffixes (used by the log handler). */
+    /** Names of the hosted agents, live (the log handler tags lines with them). */
     Collection<String> hostedNames() {
         return agents.keySet();
     }
