@@ -141,27 +141,26 @@ class RasonMasNode(object):
             self._outbox_wakeup.set()
         return _ros_now_ns()
 
-    def _listed_action_subscribers(self):
+    def _registered(self, topic, publishers):
+        """Nodes the master lists as publishers (or subscribers) of topic; None if unreachable."""
         try:
-            _, subscribers, _ = self._master.getSystemState()
-        except Exception as e:  # master unreachable: assume nothing changed
-            rospy.logwarn_throttle(10, 'cannot ask the master for subscribers: %s', e)
-            return self._action_pub.get_num_connections()
-        for topic, nodes in subscribers:
-            if topic == self._action_topic:
-                return len(nodes)
-        return 0
+            pubs, subs, _ = self._master.getSystemState()
+        except Exception as e:
+            rospy.logwarn_throttle(10, 'cannot ask the master who uses %s: %s', topic, e)
+            return None
+        return sum(len(nodes) for t, nodes in (pubs if publishers else subs) if t == topic)
+
+    def _listed_action_subscribers(self):
+        listed = self._registered(self._action_topic, publishers=False)
+        # master unreachable: trust the connections we have
+        return self._action_pub.get_num_connections() if listed is None else listed
 
     def _wait_for_publishers(self, subscriber, timeout):
-        topic = subscriber.resolved_name
         deadline = time.monotonic() + timeout
         while not rospy.is_shutdown():
-            try:
-                publishers, _, _ = self._master.getSystemState()
-            except Exception:
-                return
-            listed = sum(len(nodes) for t, nodes in publishers if t == topic)
-            if subscriber.get_num_connections() >= listed or time.monotonic() > deadline:
+            listed = self._registered(subscriber.resolved_name, publishers=True)
+            if listed is None or subscriber.get_num_connections() >= listed \
+                    or time.monotonic() > deadline:
                 return
             time.sleep(0.02)
 
