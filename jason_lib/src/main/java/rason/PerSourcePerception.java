@@ -71,6 +71,11 @@ public class PerSourcePerception implements PerceptionManager {
         return all;
     }
 
+    @Override
+    public String toString() {
+        return PerceptionManagers.PER_SOURCE;
+    }
+
     /** Names of the sources currently held (for tests and introspection). */
     public synchronized List<String> sourceNames() {
         return new ArrayList<>(sources.keySet());

@@ -7,8 +7,13 @@ import jason.asSyntax.Literal;
 
 /**
  * How an agent turns the perception messages it hears into the percepts Jason
- * sees. One instance per agent; called from ROS threads (update, expire) and
- * the agent's thread (perceive, current), so implementations are thread-safe.
+ * sees (thesis §8.1: perception managers as plug-ins). One instance per agent;
+ * called from ROS threads (update, expire) and the agent's thread (perceive,
+ * current), so implementations are thread-safe.
+ * <p>
+ * Chosen per agent with the {@code perception_manager} option of the .mas2j
+ * (see {@link PerceptionManagers}); a class implementing this interface with a
+ * public no-argument constructor can be named there without changing Rason.
  */
 public interface PerceptionManager {
 
@@ -20,7 +25,8 @@ public interface PerceptionManager {
     boolean update(String source, List<Literal> literals, long nowNanos);
 
     /**
-     * Forgets sources not heard from for more than ttlNanos (0 or less: never).
+     * Called every few tens of milliseconds (ROS time): forgets sources not heard
+     * from for more than ttlNanos (0 or less: never), and applies anything held back.
      *
      * @return true if what the agent perceives changed
      */
@@ -31,4 +37,9 @@ public interface PerceptionManager {
 
     /** The full current percept list, changed or not. */
     Collection<Literal> current();
+
+    /** Whether the agent wants this kind of literal at all (selective perception); also applied to the bridge's own percepts. */
+    default boolean wants(Literal literal) {
+        return true;
+    }
 }

@@ -15,16 +15,43 @@ import jason.asSyntax.directives.Include;
 import jason.infra.local.LocalAgArch;
 import jason.infra.local.RunLocalMAS;
 import jason.mas2j.AgentParameters;
+import jason.runtime.RuntimeServicesFactory;
 import jason.util.Config;
 
 /**
  * Jason's local infrastructure, headless and embedded: loads a .mas2j without
  * GUI, RMI or System.exit, gives every agent a {@link RosAgArch} (also when the
- * project names no architecture) and routes Jason's log to rosout.
+ * project names no architecture), prefixes the agents' names when the robot
+ * has an agent prefix, makes {@code .all_names} see the agents of other
+ * processes, and routes Jason's log to rosout.
  */
 public class RasonLocalMAS extends RunLocalMAS {
 
     public static final String ARCH_CLASS = RosAgArch.class.getName();
+
+    private String agentPrefix = "";
+
+    public RasonLocalMAS() {
+        super();
+        RasonRuntimeServices services = new RasonRuntimeServices(this);
+        services.registerDefaultAgArch(ARCH_CLASS); // agents made later with .create_agent too
+        RuntimeServicesFactory.set(services);
+    }
+
+    /**
+     * Names every agent of the project prefix+name (two robots running the same
+     * program then host distinct names). Call before {@link #load}.
+     *
+     * @throws JasonException if the prefix cannot start a Jason atom
+     */
+    public void setAgentPrefix(String prefix) throws JasonException {
+        String p = prefix == null ? "" : prefix.strip();
+        if (!p.isEmpty() && !p.matches(RasonHub.NAME_PATTERN))
+            throw new JasonException("agent prefix '" + prefix + "' must start with a lower-case letter and hold only"
+                    + " letters, digits and _ (agent names are Jason atoms), e.g. robot1_");
+        agentPrefix = p;
+        RasonHub.get().setAgentPrefix(p);
+    }
 
     /**
      * Parses the project file and fixes its agents' sources relative to it.
@@ -66,8 +93,22 @@ public class RasonLocalMAS extends RunLocalMAS {
             ap.setSource(asl.getPath());
             if (!ap.getAgArchClasses().contains(ARCH_CLASS))
                 ap.addArchClass(ARCH_CLASS);
+            try {
+                // the same check RosAgArch.init makes, but fatal here: a typo must not go unnoticed
+                PerceptionManagers.forAgent(unquote(ap.getOption(PerceptionManagers.MANAGER_OPTION)),
+                        unquote(ap.getOption(PerceptionManagers.RATE_OPTION)),
+                        unquote(ap.getOption(PerceptionManagers.PERCEIVE_OPTION)),
+                        RasonHub.get().defaultPerceptionManager());
+            } catch (IllegalArgumentException e) {
+                throw new JasonException("agent '" + ap.name + "': " + e.getMessage());
+            }
+            ap.name = agentPrefix + ap.name;
         }
         project.fixAgentsSrc();
+    }
+
+    private static String unquote(String s) {
+        return s != null && s.length() >= 2 && s.startsWith("\"") && s.endsWith("\"") ? s.substring(1, s.length() - 1) : s;
     }
 
     /** Agents of the project, as loaded, before they are created. */

@@ -22,4 +22,14 @@ public interface RosConnector {
 
     /** An agent ran .stopMAS: the node should shut down and exit with exitValue. */
     void stopRequested(int exitValue);
+
+    /**
+     * Publishes a rason_msgs/AgentMessage on the shared messages topic, at once
+     * or, if the receiving process is not connected yet, as soon as it is.
+     *
+     * @param receiverMas the receiving process; empty for a broadcast (receiver empty too)
+     * @return false if it cannot be sent (the node is stopping)
+     */
+    boolean publishMessage(String receiverMas, String sender, String receiver, String performative,
+            String content, String msgId, String inReplyTo);
 }

@@ -1,0 +1,97 @@
+package rason;
+
+import jason.asSemantics.Message;
+import jason.asSyntax.ASSyntax;
+import jason.asSyntax.ListTerm;
+import jason.asSyntax.ListTermImpl;
+import jason.asSyntax.Pred;
+import jason.asSyntax.StringTerm;
+import jason.asSyntax.StringTermImpl;
+import jason.asSyntax.Structure;
+import jason.asSyntax.Term;
+
+/** Jason messages as they cross between processes: content as Jason text, parsed once on arrival. */
+public final class Messages {
+
+    private Messages() {
+    }
+
+    /** The content of m as Jason text (what the receiver parses back). */
+    public static String contentText(Message m) {
+        Object c = m.getPropCont();
+        if (c instanceof Term t)
+            return escapeStrings(t).toString();
+        return c == null ? "" : c.toString();
+    }
+
+    /**
+     * A copy of t whose strings print with escapes: Jason prints a string's
+     * value between quotes as it is, so "say \"hi\"" would not parse back.
+     */
+    static Term escapeStrings(Term t) {
+        if (t.isString()) {
+            String v = ((StringTerm) t).getString();
+            String e = escape(v);
+            return e.equals(v) ? t : new StringTermImpl(e);
+        }
+        if (t instanceof ListTermImpl) {
+            ListTerm copy = ((ListTerm) t).cloneLT();
+            for (Term node = copy; node instanceof ListTermImpl l && !l.isEmpty(); node = l.getNext())
+                l.setTerm(escapeStrings(l.getTerm()));
+            return copy;
+        }
+        if (t instanceof Structure s && !t.isVar() && (s.getArity() > 0 || s instanceof Pred p && p.hasAnnot())) {
+            Structure copy = (Structure) s.clone();
+            for (int i = 0; i < copy.getArity(); i++)
+                copy.setTerm(i, escapeStrings(copy.getTerm(i)));
+            if (copy instanceof Pred p && p.hasAnnot())
+                p.setAnnots((ListTerm) escapeStrings(p.getAnnots()));
+            return copy;
+        }
+        return t;
+    }
+
+    // Jason's parser turns \" and \n back into a quote and a newline and keeps
+    // any other backslash sequence as it is, so only these two are escaped.
+    private static String escape(String v) {
+        if (v == null)
+            return "";
+        StringBuilder b = new StringBuilder(v.length());
+        for (char ch : v.toCharArray()) {
+            switch (ch) {
+            case '"' -> b.append("\\\"");
+            case '\n' -> b.append("\\n");
+            default -> b.append(ch);
+            }
+        }
+        return b.toString();
+    }
+
+    /**
+     * Parses received content.
+     *
+     * @throws IllegalArgumentException saying why it is not a Jason term
+     */
+    public static Term parseContent(String text) {
+        if (text == null || text.isBlank())
+            throw new IllegalArgumentException("empty content");
+        try {
+            return ASSyntax.parseTerm(text.strip());
+        } catch (Exception | Error e) { // ParseException, or TokenMgrError from the lexer
+            String why = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+            int nl = why.indexOf('\n');
+            throw new IllegalArgumentException("content '" + text + "' is not a Jason term: " + (nl < 0 ? why : why.substring(0, nl)));
+        }
+    }
+
+    /** The message the receiving agent's mailbox gets; an empty id gets a fresh one from this JVM. */
+    public static Message toJason(String performative, String sender, String receiver, Term content, String msgId,
+            String inReplyTo) {
+        Message m = msgId == null || msgId.isEmpty()
+                ? new Message(performative, sender, receiver, content)
+                : new Message(performative, sender, receiver, content, msgId);
+        if (inReplyTo != null && !inReplyTo.isEmpty())
+            m.setInReplyTo(inReplyTo);
+        return m;
+    }
+}

@@ -1,0 +1,231 @@
+package rason;
+
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
+
+/**
+ * Which agents of other rason_mas processes ("peers") can be reached, from
+ * their presence announcements and the messages they send. Pure bookkeeping:
+ * time is passed in and nothing is logged here; {@link RasonHub} owns the one
+ * instance and calls it under its lock.
+ * <p>
+ * An agent is <em>reachable</em> when its peer was heard within the timeout,
+ * our message publisher is linked to that peer (heard is not connected), and
+ * no earlier claimer holds its name. Name clashes are reported once each.
+ */
+public final class PresenceTable {
+
+    /** What one call changed. */
+    public static final class Changes {
+        /** agents that became reachable */
+        public final List<String> joined = new ArrayList<>();
+        /** agents that are no longer reachable */
+        public final List<String> left = new ArrayList<>();
+        /** agents whose process ended (left, or restarted): their pending answers will never come */
+        public final Set<String> lost = new TreeSet<>();
+        /** one line per peer that joined, left or restarted */
+        public final List<String> events = new ArrayList<>();
+        /** one line per name clash, the first time it is seen */
+        public final List<String> clashes = new ArrayList<>();
+
+        public boolean reachabilityChanged() {
+            return !joined.isEmpty() || !left.isEmpty();
+        }
+
+        public boolean isEmpty() {
+            return joined.isEmpty() && left.isEmpty() && lost.isEmpty() && events.isEmpty() && clashes.isEmpty();
+        }
+    }
+
+    private static final class Peer {
+        final String masId;
+        final long order; // first heard: the earlier claimer of a name keeps it
+        long incarnation; // 0 = not announced yet (known from a message only)
+        final Set<String> agents = new LinkedHashSet<>();
+        long heardNanos;
+        boolean linked;
+
+        Peer(String masId, long order) {
+            this.masId = masId;
+            this.order = order;
+        }
+    }
+
+    private final Map<String, Peer> peers = new LinkedHashMap<>();
+    private Map<String, String> owners = new HashMap<>(); // agent -> masId
+    private final Map<String, String> departed = new HashMap<>(); // agent -> why it is gone
+    private final Set<String> reportedClashes = new HashSet<>();
+    private Set<String> local = Set.of();
+    private long nextOrder = 0;
+
+    /** The agents this process hosts: a peer claiming one of them is a clash. */
+    public Changes setLocal(Collection<String> names) {
+        Set<String> before = reachable();
+        local = Set.copyOf(names);
+        Changes c = new Changes();
+        recompute(before, c);
+        return c;
+    }
+
+    /**
+     * A presence announcement.
+     *
+     * @param incarnation the peer's start time; an older one than known is stale and ignored
+     */
+    public Changes announced(String masId, long incarnation, Collection<String> agents, boolean leaving, long nowNanos) {
+        Set<String> before = reachable();
+        Changes c = new Changes();
+        Peer p = peers.get(masId);
+        if (p != null && p.incarnation != 0 && incarnation != 0 && incarnation < p.incarnation)
+            return c; // a late announcement of an earlier run
+        if (leaving) {
+            if (p != null && (p.incarnation == 0 || p.incarnation == incarnation)) {
+                drop(p, "announced it is leaving", c);
+                recompute(before, c);
+            }
+            return c;
+        }
+        if (p != null && p.incarnation != 0 && incarnation != p.incarnation) {
+            // restarted faster than the timeout: whatever the old run owed is lost
+            c.lost.addAll(p.agents);
+            c.events.add(masId + " restarted");
+            p.agents.clear();
+        }
+        if (p == null) {
+            p = new Peer(masId, nextOrder++);
+            peers.put(masId, p);
+            c.events.add(masId + " joined with " + agents);
+        }
+        p.incarnation = incarnation;
+        p.heardNanos = nowNanos;
+        p.agents.clear();
+        p.agents.addAll(agents);
+        recompute(before, c);
+        return c;
+    }
+
+    /** A message from agent of masId arrived: that proves the peer is there, announced or not. */
+    public Changes messageFrom(String masId, String agent, long nowNanos) {
+        Set<String> before = reachable();
+        Changes c = new Changes();
+        Peer p = peers.get(masId);
+        if (p == null) {
+            p = new Peer(masId, nextOrder++);
+            peers.put(masId, p);
+            c.events.add(masId + " heard from (message from " + agent + ") before its announcement");
+        }
+        p.heardNanos = nowNanos;
+        p.agents.add(agent);
+        recompute(before, c);
+        return c;
+    }
+
+    /**
+     * Periodic update: which peers our message publisher is linked to, and
+     * which peers have been silent for longer than timeoutNanos.
+     */
+    public Changes tick(Collection<String> linkedMas, long nowNanos, long timeoutNanos) {
+        Set<String> before = reachable();
+        Changes c = new Changes();
+        Set<String> links = new HashSet<>(linkedMas);
+        for (Peer p : new ArrayList<>(peers.values())) {
+            if (nowNanos - p.heardNanos > timeoutNanos)
+                drop(p, String.format("not heard for %.1f s", (nowNanos - p.heardNanos) / 1e9), c);
+            else
+                p.linked = links.contains(p.masId);
+        }
+        recompute(before, c);
+        return c;
+    }
+
+    /** The process of a reachable remote agent, else null. */
+    public String masOf(String agent) {
+        String mas = owners.get(agent);
+        if (mas == null)
+            return null;
+        Peer p = peers.get(mas);
+        return p != null && p.linked ? mas : null;
+    }
+
+    /** The process an agent was last heard from, reachable or not (null if never heard). */
+    public String knownMasOf(String agent) {
+        return owners.get(agent);
+    }
+
+    /** Names of the reachable remote agents, sorted. */
+    public Set<String> reachable() {
+        Set<String> out = new TreeSet<>();
+        for (Map.Entry<String, String> e : owners.entrySet()) {
+            Peer p = peers.get(e.getValue());
+            if (p != null && p.linked)
+                out.add(e.getKey());
+        }
+        return out;
+    }
+
+    /** Why agent cannot be reached, for the failure of a send. */
+    public String whyUnreachable(String agent) {
+        String mas = owners.get(agent);
+        if (mas != null)
+            return "agent '" + agent + "' of " + mas + " is known but its process is not connected yet";
+        String gone = departed.get(agent);
+        if (gone != null)
+            return "agent '" + agent + "' has left (" + gone + ")";
+        return "no agent '" + agent + "' is present (neither in this process nor announced by another)";
+    }
+
+    /** Ids of the peers currently known (for tests and diagnostics). */
+    public List<String> peerIds() {
+        return new ArrayList<>(peers.keySet());
+    }
+
+    private void drop(Peer p, String why, Changes c) {
+        peers.remove(p.masId);
+        c.lost.addAll(p.agents);
+        c.events.add(p.masId + " left: " + why);
+        for (String a : p.agents)
+            departed.put(a, p.masId + " " + why);
+    }
+
+    /** Re-assigns names to claimers (earliest first) and reports what became (un)reachable. */
+    private void recompute(Set<String> before, Changes c) {
+        Map<String, String> next = new HashMap<>();
+        List<Peer> byOrder = new ArrayList<>(peers.values());
+        byOrder.sort((a, b) -> Long.compare(a.order, b.order));
+        for (Peer p : byOrder) {
+            for (String a : p.agents) {
+                if (local.contains(a)) {
+                    clash(a, "agent name '" + a + "' is hosted here and also announced by " + p.masId
+                            + ": messages to '" + a + "' from this process stay here; give one of the robots an ~agent_prefix", c);
+                } else if (next.containsKey(a)) {
+                    clash(a, "agent name '" + a + "' is announced by both " + next.get(a) + " and " + p.masId
+                            + ": messages to '" + a + "' go to " + next.get(a) + "; give one of the robots an ~agent_prefix", c);
+                } else {
+                    next.put(a, p.masId);
+                    departed.remove(a);
+                }
+            }
+        }
+        owners = next;
+        Set<String> after = reachable();
+        for (String a : after)
+            if (!before.contains(a))
+                c.joined.add(a);
+        for (String a : before)
+            if (!after.contains(a))
+                c.left.add(a);
+    }
+
+    private void clash(String agent, String text, Changes c) {
+        if (reportedClashes.add(agent + "\n" + text))
+            c.clashes.add(text);
+    }
+}

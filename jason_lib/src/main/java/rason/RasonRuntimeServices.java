@@ -1,0 +1,28 @@
+package rason;
+
+import java.util.Collection;
+
+import jason.infra.local.BaseLocalMAS;
+import jason.infra.local.LocalRuntimeServices;
+
+/**
+ * Jason's local runtime services, except that the agent names (what
+ * {@code .all_names} answers) include the reachable agents of other rason_mas
+ * processes.
+ */
+public class RasonRuntimeServices extends LocalRuntimeServices {
+
+    public RasonRuntimeServices(BaseLocalMAS masRunner) {
+        super(masRunner);
+    }
+
+    @Override
+    public Collection<String> getAgentsNames() {
+        return RasonHub.get().allNames();
+    }
+
+    @Override
+    public int getAgentsQty() {
+        return getAgentsNames().size();
+    }
+}
