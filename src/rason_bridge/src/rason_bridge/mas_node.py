@@ -1,8 +1,10 @@
-"""The rason_mas node: runs a Jason project's agents on ROS topics (thesis §5.2).
+"""The rason_mas node: runs a Jason project's agents on ROS topics (thesis §5.2),
+and lets them talk to the agents of other rason_mas processes (thesis §5.6).
 
-rospy plumbing only: the tables, queues and action bookkeeping live on the Java
-side (jason_lib: RasonHub, RosAgArch); the decisions that are Python's are in
-:mod:`rason_bridge.events` and :mod:`rason_bridge.outbox`.
+rospy plumbing only: the tables, queues, presence and action bookkeeping live on
+the Java side (jason_lib: RasonHub, RosAgArch, PresenceTable); the decisions that
+are Python's are in :mod:`rason_bridge.events`, :mod:`rason_bridge.outbox` and
+:mod:`rason_bridge.peers`.
 """
 import logging
 import os
@@ -12,11 +14,12 @@ import time
 
 import rosgraph
 import rospy
-from rason_msgs.msg import Action, Event, Perception
+from rason_msgs.msg import Action, AgentMessage, Event, Perception, Presence
 
 from rason_bridge import events
 from rason_bridge.jvm import JvmError, start_jvm
 from rason_bridge.outbox import DEFERRED, NO_DECOMPOSER, SENT, ActionOutbox
+from rason_bridge.peers import MessageOutbox
 
 _JAVA_SEVERE = 1000
 _JAVA_WARNING = 900
@@ -27,20 +30,49 @@ def _ros_now_ns():
     return rospy.get_rostime().to_nsec()
 
 
+#: Presence: how often the hub checks links and silences (wall clock, seconds).
+_PRESENCE_TICK = 0.05
+
+
 class RasonMasNode(object):
-    """Hosts one Jason MAS in this rospy process and wires it to the jason/* topics.
+    """Hosts one Jason MAS in this rospy process and wires it to the jason/* topics
+    and to the other rason_mas processes.
 
     :param action_timeout: seconds (ROS time) before an action without feedback fails ``timeout``; 0 disables
     :param perception_ttl: seconds (ROS time) before a silent source's perceptions are dropped; 0 disables
-    :param connect_wait: seconds an action waits for listed decomposers to connect
+    :param connect_wait: seconds an action waits for listed decomposers to connect, and a message
+        for a process just heard of waits for the link to it
+    :param messages_topic: topic shared by all processes for agent messages
+    :param presence_topic: topic shared by all processes for presence announcements
+    :param presence_period: seconds between our announcements
+    :param presence_timeout: seconds of silence after which another process has left
+    :param presence_beliefs: whether agents get ``present(Name)`` percepts
+    :param ask_timeout: seconds (ROS time) a synchronous ask to a remote agent may wait; 0 disables
+    :param agent_prefix: prepended to every agent name of the project
+    :param perception_manager: default perception strategy (``per_source``, ``accumulate`` or a class)
+    :raises ValueError: a parameter that cannot be used (the message says why)
     """
 
-    def __init__(self, action_timeout=60.0, perception_ttl=2.0, connect_wait=2.0):
+    def __init__(self, action_timeout=60.0, perception_ttl=2.0, connect_wait=2.0,
+                 messages_topic='/rason/messages', presence_topic='/rason/presence',
+                 presence_period=0.5, presence_timeout=2.0, presence_beliefs=True,
+                 ask_timeout=60.0, agent_prefix='', perception_manager='per_source'):
         import jpype  # the JVM is started by main() before this point
         self._jpype = jpype
         self._hub = jpype.JClass('rason.RasonHub').get()
         self._hub.setActionTimeoutNanos(int(action_timeout * 1e9))
         self._hub.setPerceptionTtlNanos(int(perception_ttl * 1e9))
+        if presence_period <= 0 or presence_timeout <= presence_period:
+            raise ValueError('presence_timeout (%s s) must be longer than presence_period (%s s) > 0'
+                             % (presence_timeout, presence_period))
+        self._hub.setPresenceTimeoutNanos(int(presence_timeout * 1e9))
+        self._hub.setAskTimeoutNanos(int(ask_timeout * 1e9))
+        self._hub.setPresenceBeliefs(bool(presence_beliefs))
+        try:
+            self._hub.setDefaultPerceptionManager(perception_manager)
+        except jpype.JException as e:
+            raise ValueError('perception_manager: %s' % e.getMessage())
+        self._agent_prefix = agent_prefix
         self._mas = None
         self._warned_agents = set()
         self._stopping = False
@@ -58,6 +90,21 @@ class RasonMasNode(object):
             connect_wait=connect_wait)
         self._outbox_wakeup = threading.Event()
         self._connect_wait = connect_wait
+
+        # Between processes: the node name is unique on a master, so it is the MAS id;
+        # the start time tells a restarted process from the one before.
+        self.mas_id = rospy.get_name()
+        self._incarnation = time.time_ns()
+        self._hub.setMasId(self.mas_id)
+        self._presence_period = presence_period
+        self._presence_stop = threading.Event()
+        self._announce_lock = threading.Lock()
+        self._messages_topic = messages_topic
+        self._message_pub = rospy.Publisher(messages_topic, AgentMessage, queue_size=1000, tcp_nodelay=True)
+        self._presence_pub = rospy.Publisher(presence_topic, Presence, queue_size=10, tcp_nodelay=True)
+        self._presence_topic = presence_topic
+        self._messages = MessageOutbox(publish=self._message_pub.publish, linked=self._linked,
+                                       connect_wait=connect_wait)
         self._hub.setConnector(_make_connector(self))
 
     # ---- life cycle -----------------------------------------------------------------
@@ -70,6 +117,7 @@ class RasonMasNode(object):
         mas_class = self._jpype.JClass('rason.RasonLocalMAS')
         self._mas = mas_class()
         try:
+            self._mas.setAgentPrefix(self._agent_prefix)
             self._mas.load(mas2j_path)
             self._mas.create()
         except self._jpype.JException as e:
@@ -86,10 +134,15 @@ class RasonMasNode(object):
                                       queue_size=None, tcp_nodelay=True)
         rospy.Subscriber('jason/perception', Perception, self._on_perception,
                          queue_size=100, tcp_nodelay=True)
+        rospy.Subscriber(self._messages_topic, AgentMessage, self._on_message,
+                         queue_size=None, tcp_nodelay=True)
+        rospy.Subscriber(self._presence_topic, Presence, self._on_presence,
+                         queue_size=100, tcp_nodelay=True)
         # Feedback from a decomposer that is not connected yet would be lost:
         # let the running ones connect before the agents act.
         self._wait_for_publishers(events_sub, self._connect_wait)
         threading.Thread(target=self._outbox_loop, name='rason_outbox', daemon=True).start()
+        threading.Thread(target=self._presence_loop, name='rason_presence', daemon=True).start()
         rospy.Timer(rospy.Duration(0.05), self._on_tick)
         self._mas.start()
 
@@ -98,6 +151,9 @@ class RasonMasNode(object):
         if self._stopping:
             return
         self._stopping = True
+        # first, so the other processes stop counting on our agents at once
+        self._presence_stop.set()
+        self._announce(leaving=True)
         self._hub.shutdown('shutdown')
         time.sleep(grace)
         if self._mas is not None:
@@ -127,6 +183,69 @@ class RasonMasNode(object):
     def _on_tick(self, _event):
         self._hub.tick(_ros_now_ns())
 
+    def _on_message(self, msg):
+        if msg.sender_mas == self.mas_id or (msg.receiver_mas and msg.receiver_mas != self.mas_id):
+            return  # our own, or for another process: the common case, kept out of Java
+        try:
+            self._hub.deliverMessage(msg.sender_mas, msg.sender, msg.receiver_mas, msg.receiver,
+                                     msg.performative, msg.content, msg.msg_id, msg.in_reply_to)
+        except Exception as e:  # a bug must not kill the subscriber thread
+            rospy.logerr('could not deliver message from %s (%s): %s', msg.sender, msg.sender_mas, e)
+
+    def _on_presence(self, msg):
+        if msg.mas_id == self.mas_id:
+            return
+        if msg.incarnation >= 2 ** 63:
+            rospy.logwarn_throttle(10, 'ignored presence of %r: incarnation %d out of range',
+                                   msg.mas_id, msg.incarnation)
+            return
+        try:
+            self._hub.presenceAnnounced(msg.mas_id, msg.incarnation, msg.agents, msg.leaving)
+        except Exception as e:
+            rospy.logerr('could not handle presence of %r: %s', msg.mas_id, e)
+
+    # ---- presence --------------------------------------------------------------------
+
+    def _presence_loop(self):
+        # Wall clock on purpose: presence is about processes and links, and must
+        # keep working when /clock is paused or runs faster than real time.
+        next_announcement = 0.0
+        while not self._presence_stop.is_set() and not rospy.is_shutdown():
+            now = time.monotonic()
+            if now >= next_announcement:
+                self._announce(leaving=False)
+                next_announcement = now + self._presence_period
+            try:
+                self._hub.presenceTick(self._linked_processes())
+            except Exception as e:
+                rospy.logerr_throttle(10, 'presence tick failed: %s', e)
+            self._presence_stop.wait(_PRESENCE_TICK)
+
+    def _announce(self, leaving):
+        # The lock and the check keep a periodic announcement from following the leaving one.
+        with self._announce_lock:
+            if self._presence_stop.is_set() and not leaving:
+                return
+            self._publish_presence(leaving)
+
+    def _publish_presence(self, leaving):
+        try:
+            self._presence_pub.publish(Presence(
+                mas_id=self.mas_id, incarnation=self._incarnation,
+                agents=[str(n) for n in self._hub.agentNames()],
+                period=self._presence_period, leaving=leaving))
+        except Exception as e:  # topic closed at shutdown
+            rospy.logdebug('presence not announced: %s', e)
+
+    def _linked_processes(self):
+        """Node names our message publisher is connected to (rospy keeps them as endpoint ids)."""
+        impl = self._message_pub.impl
+        return [] if impl is None else [c.endpoint_id for c in list(impl.connections)]
+
+    def _linked(self, mas_id):
+        impl = self._message_pub.impl
+        return impl is not None and impl.has_connection(mas_id)
+
     # ---- agents -> ROS -------------------------------------------------------------
 
     def publish_action(self, agent, action_id, functor, parameters):
@@ -140,6 +259,19 @@ class RasonMasNode(object):
         if outcome == DEFERRED:
             self._outbox_wakeup.set()
         return _ros_now_ns()
+
+    def publish_message(self, receiver_mas, sender, receiver, performative, content, msg_id, in_reply_to):
+        """Called on an agent's thread by RosAgArch: one agent message to another process; False if impossible."""
+        msg = AgentMessage(sender_mas=self.mas_id, sender=sender, receiver_mas=receiver_mas,
+                           receiver=receiver, performative=performative, content=content,
+                           msg_id=msg_id, in_reply_to=in_reply_to)
+        try:
+            if self._messages.submit(msg, receiver_mas) != SENT:
+                self._outbox_wakeup.set()
+        except Exception as e:
+            rospy.logwarn('[%s] could not send %s to %s: %s', sender, performative, receiver or 'everyone', e)
+            return False
+        return True
 
     def _registered(self, topic, publishers):
         """Nodes the master lists as publishers (or subscribers) of topic; None if unreachable."""
@@ -165,16 +297,25 @@ class RasonMasNode(object):
             time.sleep(0.02)
 
     def _outbox_loop(self):
-        # Sends actions held back while decomposers connect; also refreshes the
+        # Sends actions held back while decomposers connect, and agent messages
+        # held back while the link to their process comes up; also refreshes the
         # master's subscriber count once a second.
         while not rospy.is_shutdown():
             woken = self._outbox_wakeup.wait(1.0)
             self._outbox_wakeup.clear()
-            if woken or self._outbox.has_held():
-                while self._outbox.flush() and not rospy.is_shutdown():
+            if woken or self._outbox.has_held() or self._messages.held_count():
+                while (self._outbox.flush() + self._flush_messages()) and not rospy.is_shutdown():
                     time.sleep(0.01)
             else:
                 self._outbox.refresh_listed()
+
+    def _flush_messages(self):
+        held, unlinked = self._messages.flush()
+        for m in unlinked:
+            rospy.logwarn('[%s] %s to %s published although %s is still not connected after %.1f s: '
+                          'it is probably lost', m.sender, m.performative, m.receiver, m.receiver_mas,
+                          self._connect_wait)
+        return held
 
     def log(self, level, agent, message):
         """Called by Java's RosLogHandler: one log line to rosout."""
@@ -204,6 +345,11 @@ def _make_connector(node):
             node.log(int(level), str(agent), str(message))
 
         @JOverride
+        def publishMessage(self, receiver_mas, sender, receiver, performative, content, msg_id, in_reply_to):
+            return node.publish_message(str(receiver_mas), str(sender), str(receiver), str(performative),
+                                        str(content), str(msg_id), str(in_reply_to))
+
+        @JOverride
         def stopRequested(self, exit_value):
             node.exit_code = int(exit_value)
             # not on the agent's thread: shutting down joins the agent threads
@@ -216,7 +362,11 @@ def main(argv=None):
     """``rosrun rason_bridge rason_mas FILE.mas2j``.
 
     ~params: ``action_timeout`` (float s, 60), ``perception_ttl`` (float s, 2; 0 disables),
-    ``connect_wait`` (float s, 2), ``shutdown_grace`` (float s, 0.5).
+    ``connect_wait`` (float s, 2), ``shutdown_grace`` (float s, 0.5),
+    ``agent_prefix`` (str, ''), ``messages_topic`` (str, /rason/messages),
+    ``presence_topic`` (str, /rason/presence), ``presence_period`` (float s, 0.5),
+    ``presence_timeout`` (float s, 2), ``presence_beliefs`` (bool, true),
+    ``ask_timeout`` (float s, 60; 0 disables), ``perception_manager`` (str, per_source).
     Publishes the hosted agents' names on the ``~agents`` parameter.
     """
     args = rospy.myargv(argv if argv is not None else sys.argv)
@@ -230,9 +380,21 @@ def main(argv=None):
     except JvmError as e:
         rospy.logfatal(str(e))
         return 1
-    node = RasonMasNode(action_timeout=rospy.get_param('~action_timeout', 60.0),
-                        perception_ttl=rospy.get_param('~perception_ttl', 2.0),
-                        connect_wait=rospy.get_param('~connect_wait', 2.0))
+    try:
+        node = RasonMasNode(action_timeout=rospy.get_param('~action_timeout', 60.0),
+                            perception_ttl=rospy.get_param('~perception_ttl', 2.0),
+                            connect_wait=rospy.get_param('~connect_wait', 2.0),
+                            messages_topic=rospy.get_param('~messages_topic', '/rason/messages'),
+                            presence_topic=rospy.get_param('~presence_topic', '/rason/presence'),
+                            presence_period=float(rospy.get_param('~presence_period', 0.5)),
+                            presence_timeout=float(rospy.get_param('~presence_timeout', 2.0)),
+                            presence_beliefs=rospy.get_param('~presence_beliefs', True),
+                            ask_timeout=float(rospy.get_param('~ask_timeout', 60.0)),
+                            agent_prefix=str(rospy.get_param('~agent_prefix', '')),
+                            perception_manager=str(rospy.get_param('~perception_manager', 'per_source')))
+    except ValueError as e:
+        rospy.logfatal('bad parameter: %s', e)
+        return 1
     try:
         names = node.load(mas2j)
     except RuntimeError as e:
