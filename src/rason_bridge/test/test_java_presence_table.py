@@ -29,7 +29,7 @@ def test_announced_agent_is_reachable_only_once_linked():
     c = t.announced('/r2/rason_mas', 1, ['bob'], False, 0)
     assert changed(c) == ([], [])
     assert t.masOf('bob') is None            # heard is not connected
-    assert 'not connected yet' in str(t.whyUnreachable('bob'))
+    assert str(t.sendableMasOf('bob')) == '/r2/rason_mas'  # a message may wait for the link
     c = t.tick(['/r2/rason_mas'], 1, TIMEOUT)
     assert changed(c) == (['bob'], [])
     assert str(t.masOf('bob')) == '/r2/rason_mas'
@@ -70,7 +70,10 @@ def test_lost_link_makes_agents_unreachable_until_it_is_back():
     t = PresenceTable()
     joined(t, '/r2/rason_mas', ['bob'])
     assert changed(t.tick([], S // 2, TIMEOUT)) == ([], ['bob'])
+    assert t.sendableMasOf('bob') is None    # a send would be lost: it fails instead
+    assert 'connection to its process is down' in str(t.whyUnreachable('bob'))
     assert changed(t.tick(['/r2/rason_mas'], S, TIMEOUT)) == (['bob'], [])
+    assert str(t.sendableMasOf('bob')) == '/r2/rason_mas'
 
 
 def test_restart_within_the_timeout_loses_pending_answers_but_stays_present():

@@ -1,5 +1,10 @@
-"""Helpers shared by the rostest scripts: watching rosout and publishing feedback."""
+"""Helpers shared by the rostest scripts: watching rosout, publishing feedback, and
+commanding and starting the agents of the multi-robot tests."""
+import itertools
+import os
 import re
+import signal
+import subprocess
 import threading
 import time
 
@@ -38,16 +43,19 @@ class LogWatcher(object):
         with self._cond:
             del self._lines[:]
 
-    def lines(self, pattern=None):
+    def lines(self, pattern=None, node=None):
+        """Lines matching pattern, from the node called ``node`` if given."""
         with self._cond:
-            return [l for l in self._lines if pattern is None or re.search(pattern, l[3])]
+            return [l for l in self._lines if (pattern is None or re.search(pattern, l[3]))
+                    and (node is None or l[2] == node)]
 
-    def wait_for(self, pattern, timeout=20.0, count=1):
-        """Wait until ``count`` lines match; returns the matching lines (empty on timeout)."""
+    def wait_for(self, pattern, timeout=20.0, count=1, node=None):
+        """Wait until ``count`` lines match (from ``node`` if given); returns them (empty on timeout)."""
         deadline = time.monotonic() + timeout
         with self._cond:
             while True:
-                found = [l for l in self._lines if re.search(pattern, l[3])]
+                found = [l for l in self._lines if re.search(pattern, l[3])
+                         and (node is None or l[2] == node)]
                 if len(found) >= count:
                     return found
                 left = deadline - time.monotonic()
@@ -77,3 +85,62 @@ def start_agents(log, timeout=20.0):
         raise AssertionError('rason_mas does not subscribe to jason/perception')
     pub.publish(Perception(source='rostest_start', perception=['go']))
     return pub
+
+
+# ---- multi-robot tests ------------------------------------------------------------------
+
+HERE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+MULTI_AGENTS = os.path.join(HERE, 'agents', 'multi')
+_command_ids = itertools.count(1)
+
+
+class Robot(object):
+    """Commands the agents of one namespace through percepts ``cmd(Id, Command)``
+    (the test agents in agents/multi run Command and print ``Id ...``)."""
+
+    def __init__(self, ns):
+        self.ns = ns
+        self.mas = '/%s/rason_mas' % ns
+        self._pub = rospy.Publisher('/%s/jason/perception' % ns, Perception, queue_size=10)
+
+    def wait_connected(self, timeout=30.0):
+        if not wait_for_subscribers(self._pub, timeout=timeout):
+            raise AssertionError('%s does not subscribe to jason/perception' % self.mas)
+
+    def command(self, text):
+        """Publish one command; returns its id (unique in the test process)."""
+        n = next(_command_ids)
+        self._pub.publish(Perception(source='rostest_cmd', perception=['cmd(%d, %s)' % (n, text)]))
+        return n
+
+    def perceive(self, source, *literals):
+        self._pub.publish(Perception(source=source, perception=list(literals)))
+
+
+def run(log, robot, agent, text, expect, timeout=15.0):
+    """Command ``agent`` of ``robot`` and wait for its ``[agent] Id <expect>`` line; returns the text after the id."""
+    n = robot.command(text)
+    found = log.wait_for(r'^\[%s\] %d (%s)$' % (agent, n, expect), timeout=timeout)
+    if not found:
+        got = [l[3] for l in log.lines(r'^\[%s\] %d ' % (agent, n))]
+        raise AssertionError('%s: %s gave no line matching %r (got %r)' % (agent, text, expect, got))
+    return re.search(r'^\[%s\] %d (.*)$' % (agent, n), found[0][3]).group(1)
+
+
+def start_mas(ns, mas2j, **params):
+    """Start a rason_mas in namespace ns with ~params; stop it with :func:`stop_mas` or SIGKILL."""
+    args = ['rosrun', 'rason_bridge', 'rason_mas', mas2j, '__ns:=/' + ns]
+    args += ['_%s:=%s' % (k, v) for k, v in params.items()]
+    # rosrun execs the node, so the pid is the node's own (SIGKILL hits the JVM too)
+    return subprocess.Popen(args)
+
+
+def stop_mas(proc, timeout=20.0):
+    if proc.poll() is None:
+        proc.send_signal(signal.SIGTERM)
+        try:
+            proc.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.wait()
+    return proc.returncode

@@ -52,6 +52,7 @@ public final class PresenceTable {
         final Set<String> agents = new LinkedHashSet<>();
         long heardNanos;
         boolean linked;
+        boolean everLinked; // a link that went down means the process is gone or cut off
 
         Peer(String masId, long order) {
             this.masId = masId;
@@ -139,8 +140,10 @@ public final class PresenceTable {
         for (Peer p : new ArrayList<>(peers.values())) {
             if (nowNanos - p.heardNanos > timeoutNanos)
                 drop(p, String.format("not heard for %.1f s", (nowNanos - p.heardNanos) / 1e9), c);
-            else
+            else {
                 p.linked = links.contains(p.masId);
+                p.everLinked |= p.linked;
+            }
         }
         recompute(before, c);
         return c;
@@ -155,9 +158,17 @@ public final class PresenceTable {
         return p != null && p.linked ? mas : null;
     }
 
-    /** The process an agent was last heard from, reachable or not (null if never heard). */
-    public String knownMasOf(String agent) {
-        return owners.get(agent);
+    /**
+     * Where a message to agent can go: its process if reachable, or if just
+     * heard of and not linked yet (the message then waits for the link);
+     * null if unknown, gone, or its link went down.
+     */
+    public String sendableMasOf(String agent) {
+        String mas = owners.get(agent);
+        if (mas == null)
+            return null;
+        Peer p = peers.get(mas);
+        return p != null && (p.linked || !p.everLinked) ? mas : null;
     }
 
     /** Names of the reachable remote agents, sorted. */
@@ -175,7 +186,7 @@ public final class PresenceTable {
     public String whyUnreachable(String agent) {
         String mas = owners.get(agent);
         if (mas != null)
-            return "agent '" + agent + "' of " + mas + " is known but its process is not connected yet";
+            return "agent '" + agent + "' of " + mas + " is known but the connection to its process is down";
         String gone = departed.get(agent);
         if (gone != null)
             return "agent '" + agent + "' has left (" + gone + ")";

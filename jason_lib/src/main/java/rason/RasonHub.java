@@ -192,9 +192,10 @@ public final class RasonHub {
         return new ArrayList<>(all);
     }
 
+    /** The process a message to agent goes to (see {@link PresenceTable#sendableMasOf}), or null. */
     String remoteMasOf(String agent) {
         synchronized (presence) {
-            return presence.masOf(agent);
+            return presence.sendableMasOf(agent);
         }
     }
 

@@ -11,10 +11,11 @@ import jason.asSyntax.StringTerm;
 import jason.asSyntax.Term;
 
 /**
- * {@code rason.perceive_only([robot/4, battery/1])}: from now on only literals
- * with these functor/arity pairs reach the agent's belief base from ROS
- * perceptions and the bridge's present/1 (selective perception, thesis §5.5).
- * Entries may also be strings ("robot/4") or one comma-separated string.
+ * {@code rason.perceive_only(["robot/4", "battery/1"])} (or one string
+ * {@code "robot/4, battery/1"}): from now on only literals with these
+ * functor/arity pairs reach the agent's belief base from ROS perceptions and
+ * the bridge's present/1 (selective perception, thesis §5.5). The pairs are
+ * strings because Jason's parser reads {@code robot/4} as a division.
  * {@code rason.perceive_all} lifts the selection.
  */
 public class perceive_only extends DefaultInternalAction {
