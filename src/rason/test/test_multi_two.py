@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Two rason_mas processes: every performative both ways with source(sender) as Jason sets
-it, .all_names and present/1, unknown receivers failing with a reason, bad input dropped
-with a log line while everything keeps working, and the remote round trip time."""
+it, .all_names and present/1, unknown receivers failing with a reason, an unanswered ask
+ending after ~ask_timeout, bad input dropped with a log line while everything keeps
+working, and the remote round trip time."""
 import os
 import sys
 import time
@@ -127,6 +128,15 @@ class TestTwoProcesses(unittest.TestCase):
         micros = float(out.split()[2])
         print('remote achieve round trip (alice -> bob -> alice, mean of 200): %.0f us' % micros)
         self.assertLess(micros, 200000)  # a behaviour check on a busy machine, not a benchmark
+
+    def test_11_an_ask_that_is_never_answered_ends_after_the_ask_timeout(self):
+        asked = time.monotonic()
+        out = run(self.log, self.r1, 'alice', 'ask(bob, askOne, slow)', r'failed .*', timeout=20)
+        waited = time.monotonic() - asked
+        self.assertIn('failed ask_timeout', out)
+        self.assertGreater(waited, 2.5)   # ask_timeout of alice is 3 s
+        self.assertLess(waited, 3.0 + 5.0)
+        self.assertTrue(self.log.lines(r'^\[bob\] slow answer for alice$'))
 
 
 if __name__ == '__main__':

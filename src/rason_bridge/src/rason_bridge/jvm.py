@@ -17,20 +17,23 @@ class JvmError(RuntimeError):
 def jason_lib_classpath(root=_WORKSPACE_ROOT):
     """The jars of jason_lib (built by ``make setup``) and their dependencies.
 
-    ``RASON_CLASSPATH`` (path-separated jars) replaces the default.
+    ``RASON_CLASSPATH`` (path-separated jars) replaces the default;
+    ``RASON_EXTRA_CLASSPATH`` is appended to it (e.g. a jar with your own
+    perception manager or internal actions).
 
     :rtype: list of str
     :raises JvmError: when jason_lib has not been built
     """
+    extra = [p for p in os.environ.get('RASON_EXTRA_CLASSPATH', '').split(os.pathsep) if p]
     override = os.environ.get('RASON_CLASSPATH')
     if override:
-        return [p for p in override.split(os.pathsep) if p]
+        return [p for p in override.split(os.pathsep) if p] + extra
     target = os.path.join(root, 'jason_lib', 'target')
     jar = os.path.join(target, 'rason-jason-lib.jar')
     if not os.path.isfile(jar):
         raise JvmError('%s not found: build jason_lib with `make setup` '
                        '(or set RASON_CLASSPATH)' % jar)
-    return [jar] + sorted(glob.glob(os.path.join(target, 'lib', '*.jar')))
+    return [jar] + sorted(glob.glob(os.path.join(target, 'lib', '*.jar'))) + extra
 
 
 def start_jvm(classpath=None):
