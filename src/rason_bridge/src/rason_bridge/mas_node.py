@@ -19,7 +19,7 @@ from rason_msgs.msg import Action, AgentMessage, Event, Perception, Presence
 from rason_bridge import events
 from rason_bridge.jvm import JvmError, start_jvm
 from rason_bridge.outbox import DEFERRED, NO_DECOMPOSER, SENT, ActionOutbox
-from rason_bridge.peers import MessageOutbox
+from rason_bridge.peers import HELD, MessageOutbox
 
 _JAVA_SEVERE = 1000
 _JAVA_WARNING = 900
@@ -266,7 +266,7 @@ class RasonMasNode(object):
                            receiver=receiver, performative=performative, content=content,
                            msg_id=msg_id, in_reply_to=in_reply_to)
         try:
-            if self._messages.submit(msg, receiver_mas) != SENT:
+            if self._messages.submit(msg, receiver_mas) == HELD:
                 self._outbox_wakeup.set()
         except Exception as e:
             rospy.logwarn('[%s] could not send %s to %s: %s', sender, performative, receiver or 'everyone', e)

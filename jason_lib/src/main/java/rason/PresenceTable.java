@@ -115,9 +115,13 @@ public final class PresenceTable {
 
     /** A message from agent of masId arrived: that proves the peer is there, announced or not. */
     public Changes messageFrom(String masId, String agent, long nowNanos) {
-        Set<String> before = reachable();
         Changes c = new Changes();
         Peer p = peers.get(masId);
+        if (p != null && p.agents.contains(agent)) { // the usual case: nothing changes but the time
+            p.heardNanos = nowNanos;
+            return c;
+        }
+        Set<String> before = reachable();
         if (p == null) {
             p = new Peer(masId, nextOrder++);
             peers.put(masId, p);
