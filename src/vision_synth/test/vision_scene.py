@@ -37,9 +37,9 @@ LIGHT = np.array([-0.4, -0.7, -0.6]) / np.linalg.norm([-0.4, -0.7, -0.6])
 AMBIENT = 0.3
 
 
-def _shade(albedo, normal):
-    """Lambertian colour (0..1) of ``albedo`` under the scene's light, for unit normal(s)."""
-    lit = AMBIENT + (1.0 - AMBIENT) * np.clip(np.asarray(normal) @ LIGHT, 0.0, 1.0)
+def _shade(albedo, normal, light=LIGHT):
+    """Lambertian colour (0..1) of ``albedo`` lit from direction ``light``, unit normal(s)."""
+    lit = AMBIENT + (1.0 - AMBIENT) * np.clip(np.asarray(normal) @ light, 0.0, 1.0)
     return np.asarray(albedo) * np.asarray(lit)[..., None]
 
 
@@ -87,18 +87,21 @@ class Scene(object):
     :param show: which cylinders exist: subset of {'left', 'right'}
     :param posts: grey vertical posts (x, z, radius), floor to 1 m
     :param light: lighting scale (1 full, 0.3 dimmed)
+    :param light_from: direction towards the light (optical frame; (0, -1, 0) = overhead,
+        which leaves the vertical cylinders only the ambient light)
     :param separation: distance between the cylinder axes
     :param extra_pairs: more (x, z, heading, separation) cylinder pairs (decoys)
     """
 
     def __init__(self, robot=(0.0, 2.0, 0.0), show=('left', 'right'), posts=(), light=1.0,
-                 separation=SEPARATION, extra_pairs=()):
+                 separation=SEPARATION, extra_pairs=(), light_from=LIGHT):
         self.robot = robot
         self.show = set(show)
         self.posts = list(posts)
         self.light = light
         self.separation = separation
         self.extra_pairs = list(extra_pairs)
+        self.light_from = np.asarray(light_from, float) / np.linalg.norm(light_from)
 
     def truth(self):
         """dict(angle, depth, yaw, heading) of the robot, or None."""
@@ -146,8 +149,8 @@ class Scene(object):
         with np.errstate(divide='ignore'):
             t = np.where(floor, CAMERA_HEIGHT / b, np.float32(WALL_DEPTH)).astype(np.float32)
         colour = np.empty((height, width, 3), np.float32)
-        colour[...] = _shade(WALL_GREY, np.array([0.0, 0.0, -1.0]))
-        colour[floor] = _shade(FLOOR_GREY, np.array([0.0, -1.0, 0.0]))
+        colour[...] = _shade(WALL_GREY, np.array([0.0, 0.0, -1.0]), self.light_from)
+        colour[floor] = _shade(FLOOR_GREY, np.array([0.0, -1.0, 0.0]), self.light_from)
         with np.errstate(divide='ignore', invalid='ignore'):
             for ox, oz, r, (h0, h1), albedo in self._objects():
                 window = _window(k, width, height, ox, oz, r, h0, h1)
@@ -166,7 +169,7 @@ class Scene(object):
                 tw[closer] = tt[closer]
                 n = np.stack([(tt[closer] * aw[closer] - ox) / r, np.zeros(closer.sum()),
                               (tt[closer] - oz) / r], axis=-1)
-                colour[window][closer] = _shade(albedo, n)
+                colour[window][closer] = _shade(albedo, n, self.light_from)
         colour *= self.light * 255.0
         rng = np.random.default_rng(seed)
         if noise > 0:

@@ -21,8 +21,8 @@ from vision_synth import geometry, literals
 #: HSV ranges (OpenCV: H 0–180, S and V 0–255), inclusive. ``h`` with lo > hi wraps
 #: through 0 (for reds). The low V bounds keep the cylinders under dimmed lights (~30 %).
 DEFAULT_COLORS = {
-    'green': {'h': [40, 90], 's': [90, 255], 'v': [12, 255]},
-    'orange': {'h': [4, 24], 's': [130, 255], 'v': [20, 255]},
+    'green': {'h': [40, 90], 's': [90, 255], 'v': [10, 255]},
+    'orange': {'h': [4, 24], 's': [130, 255], 'v': [12, 255]},
 }
 
 #: Agent name -> the colours of its left and right cylinders (seen from behind the robot).

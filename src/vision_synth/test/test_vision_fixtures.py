@@ -40,7 +40,7 @@ def test_fixture(name):
     assert abs(pose.angle - expected['angle']) <= ANGLE_TOL, pose
     assert abs(pose.depth - expected['depth']) <= DEPTH_TOL, pose
     assert abs(angle_diff(pose.yaw, expected['yaw'])) <= YAW_TOL, pose
-    if abs(expected['yaw']) > YAW_TOL:
+    if YAW_TOL < abs(expected['yaw']) < 180 - YAW_TOL:  # the sign means nothing near 0, ±180
         assert math.copysign(1, pose.yaw) == math.copysign(1, expected['yaw']), pose
 
 
