@@ -92,17 +92,26 @@ def bad(msg, **changes):
     return msg
 
 
+def change_field(msg, name, **changes):
+    """``msg`` with field ``name`` changed (offset or datatype)."""
+    fields = []
+    for f in msg.fields:
+        kw = dict(name=f.name, offset=f.offset, datatype=f.datatype, count=f.count)
+        if f.name == name:
+            kw.update(changes)
+        fields.append(PointField(**kw))
+    return bad(msg, fields=fields)
+
+
 @pytest.mark.parametrize('make', [
     lambda m: bad(m, height=0, width=0, data=b''),
     lambda m: bad(m, height=1, width=12),
     lambda m: bad(m, data=m.data[:-1]),
     lambda m: bad(m, row_step=m.row_step - 1),
     lambda m: bad(m, fields=[f for f in m.fields if f.name != 'z']),
-    lambda m: bad(m, fields=[PointField(name=f.name, offset=f.offset,
-                                        datatype=PointField.FLOAT64 if f.name == 'x' else f.datatype,
-                                        count=1) for f in m.fields]),
-    lambda m: bad(m, fields=[PointField(name=f.name, offset=f.offset + (20 if f.name == 'rgb' else 0),
-                                        datatype=f.datatype, count=1) for f in m.fields]),
+    lambda m: change_field(m, 'x', datatype=PointField.FLOAT64),
+    lambda m: change_field(m, 'rgb', datatype=PointField.UINT8),
+    lambda m: change_field(m, 'rgb', offset=32),  # beyond point_step
 ])
 def test_malformed_clouds_raise_cloud_error(make):
     xyz, rgb = random_frame(3, 4)

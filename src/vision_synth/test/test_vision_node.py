@@ -31,7 +31,8 @@ class Ros(object):
 
         monkeypatch.setattr(rospy, 'Publisher', publisher)
         monkeypatch.setattr(rospy, 'Subscriber', subscriber)
-        monkeypatch.setattr(rospy, 'logwarn_throttle', lambda period, text: self.warnings.append(text))
+        monkeypatch.setattr(rospy, 'logwarn_throttle',
+                            lambda _period, text: self.warnings.append(text))
         monkeypatch.setattr(rospy, 'logdebug_throttle', lambda period, text: None)
 
     def feed(self, topic, msg):
