@@ -1,0 +1,157 @@
+"""The vision_synth node: robot perceptions from a Kinect-like camera (thesis §6.2, §6.2.1).
+
+rospy plumbing only; detection is in :mod:`vision_synth.detector`, angle/depth/yaw in
+:mod:`vision_synth.geometry` (read its docstring for the SIGNS: Angle and Yaw are degrees,
+positive to the RIGHT), formatting in :mod:`vision_synth.literals`.
+
+Topics (relative names: run one node per robot, in the robot's namespace):
+
+- subscribes ``camera/depth_registered/points`` (sensor_msgs/PointCloud2, organized, with
+  ``rgb``): one perception message per cloud processed; stale clouds are dropped
+  (queue of 1), so processing never lags behind the camera
+- subscribes ``camera/rgb/camera_info`` (sensor_msgs/CameraInfo): intrinsics for
+  ``~angle_method: pinhole`` (until one arrives, the ``~fov`` is used)
+- subscribes ``camera/rgb/image_raw`` (sensor_msgs/Image, rgb8/bgr8) only with
+  ``~use_image: true``: colours then come from the latest image whose stamp is within
+  ``~max_stamp_diff`` of the cloud's (the cloud may then lack ``rgb``)
+- publishes ``jason/perception`` (rason_msgs/Perception): ``source`` = ``<node name>_robots``
+  (or ``~source``), ``perception`` = ``robot(Name,Angle,Depth,Yaw)`` literals; an empty
+  list when no robot is seen, and also when a frame is unusable (with a throttled warning):
+  a perception the node cannot back must not linger in the agent's beliefs
+
+Private parameters (defaults in ``config/vision_synth.yaml`` and :data:`detector.DEFAULTS`):
+
+- ``~robots`` (dict): agent name -> ``{left: colour, right: colour}``,
+  default ``{faulty: {left: green, right: orange}}``
+- ``~colors`` (dict): colour -> ``{h: [lo, hi], s: [lo, hi], v: [lo, hi]}``, OpenCV HSV
+  (H 0–180); see :data:`detector.DEFAULT_COLORS`
+- ``~pair_min`` 0.22, ``~pair_max`` 0.25, ``~pair_nominal`` 0.227 (m): cylinder pairing
+- ``~min_blob_area`` 30 (px), ``~min_valid_points`` 10, ``~kernel_size`` 3 (px)
+- ``~cylinder_radius`` 0.02 (m): visible surface -> axis correction
+- ``~angle_method`` ``cloud`` (3-D bearing; or ``pinhole``, ``thesis``), ``~fov`` 57 (deg)
+- ``~use_image`` false, ``~max_stamp_diff`` 0.05 (s)
+- ``~source`` (str): perception source, default ``<node name>_robots``
+"""
+import threading
+import time
+
+import rospy
+from rason_msgs.msg import Perception
+from sensor_msgs.msg import CameraInfo, Image, PointCloud2
+
+from vision_synth import cloud, detector
+
+WARN_PERIOD = 5.0  # s between repeated warnings about bad input
+CLOUD_BUFF = 1 << 25  # bytes: several 640x480 clouds, so a queue of 1 really drops stale ones
+
+
+def default_source(node_name):
+    """``<node name>_robots`` from a resolved node name (``/faulty/vision_synth`` ->
+    ``vision_synth_robots``).
+
+    :param node_name: e.g. rospy.get_name()
+    """
+    return node_name.rstrip('/').rsplit('/', 1)[-1] + '_robots'
+
+
+def intrinsics_from_info(msg):
+    """:class:`detector.Intrinsics` of a sensor_msgs/CameraInfo, or None if K is unset."""
+    try:
+        return detector.Intrinsics(msg.K[0], msg.K[4], msg.K[2], msg.K[5])
+    except (ValueError, IndexError):
+        return None
+
+
+class VisionSynthNode(object):
+    """Wires a :class:`detector.Detector` to ROS topics.
+
+    :param det: the detector
+    :param source: perception source name
+    :param use_image: colours from ``camera/rgb/image_raw`` instead of the cloud's ``rgb``
+    :param max_stamp_diff: s, image/cloud pairing tolerance with ``use_image``
+    """
+
+    def __init__(self, det, source, use_image=False, max_stamp_diff=0.05):
+        self._detector = det
+        self._source = source
+        self._use_image = use_image
+        self._max_stamp_diff = max_stamp_diff
+        self._lock = threading.Lock()
+        self._intrinsics = None
+        self._image = None  # (stamp, rgb) of the latest image, with use_image
+        self._pub = rospy.Publisher('jason/perception', Perception, queue_size=1)
+        rospy.Subscriber('camera/rgb/camera_info', CameraInfo, self._on_info, queue_size=1)
+        if use_image:
+            rospy.Subscriber('camera/rgb/image_raw', Image, self._on_image, queue_size=1,
+                             buff_size=CLOUD_BUFF)
+        rospy.Subscriber('camera/depth_registered/points', PointCloud2, self._on_cloud,
+                         queue_size=1, buff_size=CLOUD_BUFF)
+
+    def _on_info(self, msg):
+        k = intrinsics_from_info(msg)
+        if k is None:
+            rospy.logwarn_throttle(WARN_PERIOD, 'vision_synth: camera_info without a usable K')
+        with self._lock:
+            self._intrinsics = k
+
+    def _on_image(self, msg):
+        try:
+            rgb = cloud.image_to_rgb(msg)
+        except cloud.CloudError as e:
+            rospy.logwarn_throttle(WARN_PERIOD, 'vision_synth: ignoring image: %s' % e)
+            return
+        with self._lock:
+            self._image = (msg.header.stamp, rgb)
+
+    def _frame(self, msg):
+        """(rgb, xyz) of a cloud message, or raise ValueError saying why not."""
+        xyz, rgb = cloud.cloud_to_arrays(msg, need_color=not self._use_image)
+        if self._use_image:
+            with self._lock:
+                image = self._image
+            if image is None:
+                raise ValueError('no image received yet on camera/rgb/image_raw')
+            gap = abs((image[0] - msg.header.stamp).to_sec())
+            if gap > self._max_stamp_diff:
+                raise ValueError('latest image is %.3f s away from the cloud' % gap)
+            rgb = image[1]
+        return rgb, xyz
+
+    def _on_cloud(self, msg):
+        start = time.perf_counter()
+        literals = []
+        try:
+            rgb, xyz = self._frame(msg)
+            with self._lock:
+                intrinsics = self._intrinsics
+            found = self._detector.detect(rgb, xyz, intrinsics)
+            literals = [d.literal() for d in found]
+        except ValueError as e:  # CloudError, FrameError, bad literal values
+            rospy.logwarn_throttle(WARN_PERIOD, 'vision_synth: unusable frame: %s' % e)
+            literals = []
+        self._pub.publish(Perception(source=self._source, perception=literals))
+        rospy.logdebug_throttle(WARN_PERIOD, 'vision_synth: %.1f ms per frame; %s'
+                                % ((time.perf_counter() - start) * 1e3, literals))
+
+
+def main():
+    """Entry point of ``vision_synth_node``: reads ~params, then spins."""
+    rospy.init_node('vision_synth')
+    options = {key: rospy.get_param('~' + key, default)
+               for key, default in detector.DEFAULTS.items()}
+    colors = rospy.get_param('~colors', detector.DEFAULT_COLORS)
+    robots = rospy.get_param('~robots', detector.DEFAULT_ROBOTS)
+    source = str(rospy.get_param('~source', '') or default_source(rospy.get_name()))
+    use_image = bool(rospy.get_param('~use_image', False))
+    max_stamp_diff = float(rospy.get_param('~max_stamp_diff', 0.05))
+    try:
+        det = detector.Detector(colors, robots, **options)
+    except detector.ConfigError as e:
+        rospy.logfatal('vision_synth: bad parameter: %s' % e)
+        raise SystemExit(2)
+    VisionSynthNode(det, source, use_image, max_stamp_diff)
+    rospy.loginfo('vision_synth: ready, source %s, robots %s, colours from %s'
+                  % (source, ', '.join('%s=%s/%s' % (m.name, m.left, m.right)
+                                       for m in det.markers),
+                     'camera/rgb/image_raw' if use_image else 'the cloud'))
+    rospy.spin()

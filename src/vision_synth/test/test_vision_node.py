@@ -1,0 +1,150 @@
+"""The node adapter with rospy's publisher/subscriber replaced by fakes (no ROS master)."""
+import numpy as np
+import pytest
+import rospy
+from sensor_msgs.msg import CameraInfo, Image
+
+import vision_scene as vs
+from vision_synth import cloud, detector, node
+
+
+class FakePublisher(object):
+    def __init__(self, topic, msg_class, queue_size=None, **_):
+        self.topic, self.msg_class, self.sent = topic, msg_class, []
+
+    def publish(self, msg):
+        self.sent.append(msg)
+
+
+class Ros(object):
+    """Records what the node publishes, subscribes and warns."""
+
+    def __init__(self, monkeypatch):
+        self.publishers, self.subscribers, self.warnings = {}, {}, []
+
+        def publisher(topic, msg_class, **kw):
+            self.publishers[topic] = FakePublisher(topic, msg_class, **kw)
+            return self.publishers[topic]
+
+        def subscriber(topic, msg_class, callback, **kw):
+            self.subscribers[topic] = (callback, kw)
+
+        monkeypatch.setattr(rospy, 'Publisher', publisher)
+        monkeypatch.setattr(rospy, 'Subscriber', subscriber)
+        monkeypatch.setattr(rospy, 'logwarn_throttle',
+                            lambda _period, text: self.warnings.append(text))
+        monkeypatch.setattr(rospy, 'logdebug_throttle', lambda period, text: None)
+
+    def feed(self, topic, msg):
+        self.subscribers[topic][0](msg)
+
+    @property
+    def sent(self):
+        return self.publishers['jason/perception'].sent
+
+
+@pytest.fixture
+def ros(monkeypatch):
+    return Ros(monkeypatch)
+
+
+POINTS = 'camera/depth_registered/points'
+IMAGE = 'camera/rgb/image_raw'
+
+
+def scene_cloud(robot=(-10.0, 2.0, 30.0), stamp=1.0, with_rgb=True):
+    rgb, xyz = vs.Scene(robot).render()
+    msg = cloud.arrays_to_cloud(xyz, rgb if with_rgb else None, stamp=rospy.Time.from_sec(stamp))
+    return msg, rgb
+
+
+def image_msg(rgb, stamp):
+    msg = Image(height=rgb.shape[0], width=rgb.shape[1], encoding='rgb8',
+                step=rgb.shape[1] * 3, data=rgb.tobytes())
+    msg.header.stamp = rospy.Time.from_sec(stamp)
+    return msg
+
+
+@pytest.mark.parametrize('name, source', [
+    ('/vision_synth', 'vision_synth_robots'), ('/helper/vision_synth', 'vision_synth_robots'),
+    ('/helper/eyes/', 'eyes_robots')])
+def test_default_source(name, source):
+    assert node.default_source(name) == source
+
+
+def test_intrinsics_from_camera_info():
+    info = CameraInfo(K=[589.4, 0, 319.5, 0, 589.0, 239.5, 0, 0, 1])
+    k = node.intrinsics_from_info(info)
+    assert (k.fx, k.fy, k.cx, k.cy) == (589.4, 589.0, 319.5, 239.5)
+    assert node.intrinsics_from_info(CameraInfo()) is None  # K all zero: not calibrated
+
+
+def test_subscriptions_drop_stale_clouds(ros):
+    node.VisionSynthNode(detector.Detector(), 'vision_synth_robots')
+    callback, kw = ros.subscribers[POINTS]
+    assert kw['queue_size'] == 1 and kw['buff_size'] >= 640 * 480 * 32
+    assert IMAGE not in ros.subscribers  # colours come from the cloud by default
+
+
+def test_one_perception_per_cloud(ros):
+    node.VisionSynthNode(detector.Detector(), 'vision_synth_robots')
+    msg, _ = scene_cloud()
+    ros.feed(POINTS, msg)
+    ros.feed(POINTS, scene_cloud(robot=None)[0])
+    assert [m.source for m in ros.sent] == ['vision_synth_robots'] * 2
+    assert len(ros.sent[0].perception) == 1
+    text = ros.sent[0].perception[0]
+    angle, depth, yaw = (float(v) for v in text[len('robot(faulty,'):-1].split(','))
+    assert abs(angle + 10) < 2 and abs(depth - 2) < 0.05 and abs(yaw - 20) < 10
+    assert ros.sent[1].perception == []  # nobody in view clears the source
+    assert ros.warnings == []
+
+
+@pytest.mark.parametrize('break_it', [
+    lambda m: setattr(m, 'data', m.data[:100]),
+    lambda m: setattr(m, 'fields', m.fields[:3]),  # no rgb
+    lambda m: setattr(m, 'height', 0),
+])
+def test_bad_cloud_publishes_an_empty_list_and_warns(ros, break_it):
+    node.VisionSynthNode(detector.Detector(), 'src')
+    msg, _ = scene_cloud()
+    break_it(msg)
+    ros.feed(POINTS, msg)
+    assert [m.perception for m in ros.sent] == [[]]
+    assert len(ros.warnings) == 1 and 'unusable frame' in ros.warnings[0]
+
+
+def test_all_nan_cloud_is_nothing_seen(ros):
+    node.VisionSynthNode(detector.Detector(), 'src')
+    rgb, xyz = vs.Scene((0, 2.0, 0)).render()
+    ros.feed(POINTS, cloud.arrays_to_cloud(np.full_like(xyz, np.nan), rgb))
+    assert [m.perception for m in ros.sent] == [[]]
+
+
+def test_with_image_colours_come_from_the_image_paired_by_stamp(ros):
+    node.VisionSynthNode(detector.Detector(), 'src', use_image=True, max_stamp_diff=0.05)
+    msg, rgb = scene_cloud(stamp=10.0, with_rgb=False)
+    ros.feed(POINTS, msg)                      # no image yet
+    ros.feed(IMAGE, image_msg(rgb, 9.5))
+    ros.feed(POINTS, msg)                      # image 0.5 s old
+    ros.feed(IMAGE, image_msg(rgb, 10.02))
+    ros.feed(POINTS, msg)                      # paired
+    assert [len(m.perception) for m in ros.sent] == [0, 0, 1]
+    assert len(ros.warnings) == 2
+
+
+def test_bad_image_is_ignored_with_a_warning(ros):
+    node.VisionSynthNode(detector.Detector(), 'src', use_image=True)
+    ros.feed(IMAGE, Image(height=2, width=2, encoding='mono16', step=4, data=bytes(8)))
+    assert len(ros.warnings) == 1 and 'mono16' in ros.warnings[0]
+
+
+def test_pinhole_angle_follows_camera_info(ros):
+    node.VisionSynthNode(detector.Detector(angle_method='pinhole'), 'src')
+    msg, _ = scene_cloud(robot=(12.0, 2.0, 0.0))
+    ros.feed(POINTS, msg)
+    ros.feed('camera/rgb/camera_info',
+             CameraInfo(K=[vs.FX, 0, vs.CX + 60, 0, vs.FY, vs.CY, 0, 0, 1]))
+    ros.feed(POINTS, msg)
+    first, second = (float(m.perception[0].split(',')[1]) for m in ros.sent)
+    assert abs(first - 12.0) < 2 and second < first - 4
