@@ -15,7 +15,9 @@ APT_PACKAGES := catkin ros-message-generation ros-message-runtime libstd-msgs-de
   python3-diagnostic-msgs python3-tf2-ros python3-cv-bridge python3-opencv python3-numpy \
   python3-pytest librostest-dev rosbash rospack-tools ros-sensor-msgs ros-nav-msgs \
   ros-diagnostic-msgs libsensor-msgs-dev libnav-msgs-dev libdiagnostic-msgs-dev \
-  python3-jpype default-jdk-headless maven build-essential cmake
+  python3-jpype default-jdk-headless maven build-essential cmake \
+  libroscpp-dev libgeometry-msgs-dev libros-rosgraph-msgs-dev libtf2-msgs-dev \
+  libmujoco-dev libqhull-dev libosmesa6-dev
 
 # Environment of every ROS command: the workspace's devel space, logs in build/.
 export PYENV_VERSION := system

@@ -1,0 +1,113 @@
+"""Helpers for the rostests against the simulator: true poses, teleporting, running
+decomposer actions directly on jason/action, and the camera-frame ground truth."""
+import math
+import threading
+import time
+
+import rospy
+from geometry_msgs.msg import Pose2D, PoseStamped
+from rason_msgs.msg import Action, Event
+
+# Where the simulator mounts the Kinect on the helper (rason_sim world.h CameraConfig).
+CAMERA_FORWARD = 0.08
+
+
+def yaw_of(quaternion):
+    """Heading (rad, counter-clockwise) of a quaternion that only turns about z."""
+    return 2.0 * math.atan2(quaternion.z, quaternion.w)
+
+
+def wrap_degrees(angle):
+    """Into (-180, 180]."""
+    angle = math.fmod(angle, 360.0)
+    if angle <= -180.0:
+        angle += 360.0
+    elif angle > 180.0:
+        angle -= 360.0
+    return angle
+
+
+def camera_truth(helper, faulty):
+    """What the helper's camera should report of the faulty robot.
+
+    helper, faulty: (x, y, yaw) world poses. Returns (angle, depth, yaw) with the
+    vision_synth conventions: angle and yaw in degrees, clockwise (right) positive; depth
+    along the optical axis to the robot's centre; Yaw = psi + angle, psi the faulty's heading
+    relative to the camera's.
+    """
+    hx, hy, hyaw = helper
+    cx, cy = hx + CAMERA_FORWARD * math.cos(hyaw), hy + CAMERA_FORWARD * math.sin(hyaw)
+    dx, dy = faulty[0] - cx, faulty[1] - cy
+    forward = dx * math.cos(hyaw) + dy * math.sin(hyaw)
+    right = dx * math.sin(hyaw) - dy * math.cos(hyaw)
+    angle = math.degrees(math.atan2(right, forward))
+    psi = -math.degrees(faulty[2] - hyaw)
+    return angle, forward, wrap_degrees(psi + angle)
+
+
+class SimRobot(object):
+    """One simulated robot as a test sees it: true pose, teleport, decomposer actions."""
+
+    def __init__(self, name, agent=None):
+        self.name = name
+        self.agent = agent or name
+        self._lock = threading.Condition()
+        self._pose = None
+        self._results = {}
+        self._next_id = 1000
+        rospy.Subscriber('/%s/true_pose' % name, PoseStamped, self._on_pose, queue_size=10)
+        rospy.Subscriber('/%s/jason/event' % name, Event, self._on_event, queue_size=100)
+        self._teleport = rospy.Publisher('/%s/set_pose' % name, Pose2D, queue_size=1)
+        self._actions = rospy.Publisher('/%s/jason/action' % name, Action, queue_size=10)
+
+    def _on_pose(self, msg):
+        with self._lock:
+            self._pose = (msg.pose.position.x, msg.pose.position.y, yaw_of(msg.pose.orientation))
+            self._lock.notify_all()
+
+    def _on_event(self, msg):
+        if msg.agent != self.agent or msg.event_type != 'action_feedback' or len(msg.parameters) < 2:
+            return
+        with self._lock:
+            self._results[msg.parameters[1]] = msg.parameters[0]
+            self._lock.notify_all()
+
+    def pose(self, timeout=10.0):
+        """Latest true pose (x, y, yaw rad); waits for the first one."""
+        deadline = time.monotonic() + timeout
+        with self._lock:
+            while self._pose is None and time.monotonic() < deadline:
+                self._lock.wait(0.1)
+            return self._pose
+
+    def wait_connected(self, timeout=15.0):
+        """Wait until the decomposer and the simulator listen to us."""
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline and not rospy.is_shutdown():
+            if self._actions.get_num_connections() and self._teleport.get_num_connections():
+                return True
+            time.sleep(0.05)
+        return False
+
+    def teleport(self, x, y, yaw, settle=0.3):
+        """Put the robot at (x, y, yaw rad) and wait (sim time) until the pose shows it."""
+        self._teleport.publish(Pose2D(x=x, y=y, theta=yaw))
+        deadline = time.monotonic() + 10.0
+        while time.monotonic() < deadline:
+            p = self.pose()
+            if math.hypot(p[0] - x, p[1] - y) < 0.01:
+                break
+            time.sleep(0.02)
+        rospy.sleep(settle)
+
+    def act(self, action, *parameters, timeout=120.0):
+        """Publish a decomposer action and return its result (OK or a failure reason)."""
+        self._next_id += 1
+        action_id = str(self._next_id)
+        self._actions.publish(Action(agent=self.agent, action_id=self._next_id, action=action,
+                                     parameters=[str(p) for p in parameters]))
+        deadline = time.monotonic() + timeout
+        with self._lock:
+            while action_id not in self._results and time.monotonic() < deadline:
+                self._lock.wait(0.1)
+            return self._results.get(action_id)

@@ -1,0 +1,42 @@
+// Turns MuJoCo's offscreen RGB + depth buffers into what freenect publishes: a top-down
+// rgb8 image and an organized PointCloud2 (x, y, z, rgb) in the optical frame, with
+// Kinect-like depth noise and dropouts.
+#pragma once
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "rason_sim/world.h"
+
+namespace rason_sim {
+
+struct Intrinsics {
+  int width = 0, height = 0;
+  double fx = 0, fy = 0, cx = 0, cy = 0;
+};
+
+Intrinsics intrinsicsFor(const CameraConfig& camera);
+
+struct DepthNoise {
+  double scale = 1.0;     // 1 = Kinect-like axial noise; 0 = exact depth
+  double dropout = 0.0;   // probability that a valid pixel returns no depth
+  double min_range = 0.45, max_range = 8.0;
+};
+
+// Depth buffer value (0..1, non-linear) -> metres along the optical axis; NaN = no hit.
+float linearDepth(float buffer, double near, double far);
+
+// Kinect v1 axial noise (standard deviation in metres) at a given depth: grows with z^2.
+double kinectSigma(double z);
+
+constexpr int kPointStep = 16;  // x, y, z, rgb as float32
+
+// rgb_bottom_up: width*height*3 bytes as MuJoCo reads them (first row = bottom).
+// depth_bottom_up: width*height floats, depth buffer values.
+// Fills image (rgb8, top row first) and cloud (kPointStep bytes per point, row-major).
+void buildFrame(const Intrinsics& k, const uint8_t* rgb_bottom_up, const float* depth_bottom_up,
+                double near, double far, const DepthNoise& noise, std::mt19937& rng,
+                std::vector<uint8_t>& image, std::vector<uint8_t>& cloud);
+
+}  // namespace rason_sim

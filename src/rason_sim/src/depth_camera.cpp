@@ -1,0 +1,67 @@
+#include "rason_sim/depth_camera.h"
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace rason_sim {
+
+Intrinsics intrinsicsFor(const CameraConfig& camera) {
+  Intrinsics k;
+  k.width = camera.width;
+  k.height = camera.height;
+  const double half_h = camera.horizontal_fov_deg * 3.14159265358979323846 / 360.0;
+  k.fx = k.fy = (camera.width / 2.0) / std::tan(half_h);  // square pixels, as MuJoCo renders
+  k.cx = (camera.width - 1) / 2.0;
+  k.cy = (camera.height - 1) / 2.0;
+  return k;
+}
+
+float linearDepth(float buffer, double near, double far) {
+  if (!(buffer < 1.0f)) return std::numeric_limits<float>::quiet_NaN();  // background
+  return static_cast<float>(near * far / (far - buffer * (far - near)));
+}
+
+double kinectSigma(double z) {
+  // Axial noise model of the Kinect v1 (Nguyen et al. 2012): 1.2 mm + 1.9 mm per (m - 0.4)^2.
+  return 0.0012 + 0.0019 * (z - 0.4) * (z - 0.4);
+}
+
+void buildFrame(const Intrinsics& k, const uint8_t* rgb_bottom_up, const float* depth_bottom_up,
+                double near, double far, const DepthNoise& noise, std::mt19937& rng,
+                std::vector<uint8_t>& image, std::vector<uint8_t>& cloud) {
+  const int w = k.width, h = k.height;
+  image.resize(static_cast<size_t>(w) * h * 3);
+  cloud.resize(static_cast<size_t>(w) * h * kPointStep);
+  std::normal_distribution<float> gauss(0.0f, 1.0f);
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (int row = 0; row < h; ++row) {
+    const int src_row = h - 1 - row;  // OpenGL rows start at the bottom
+    const uint8_t* src_rgb = rgb_bottom_up + static_cast<size_t>(src_row) * w * 3;
+    std::memcpy(&image[static_cast<size_t>(row) * w * 3], src_rgb, static_cast<size_t>(w) * 3);
+    const float* src_depth = depth_bottom_up + static_cast<size_t>(src_row) * w;
+    uint8_t* out = &cloud[static_cast<size_t>(row) * w * kPointStep];
+    for (int col = 0; col < w; ++col, out += kPointStep) {
+      float z = linearDepth(src_depth[col], near, far);
+      if (!std::isnan(z)) {
+        if (noise.scale > 0.0) z += static_cast<float>(noise.scale * kinectSigma(z)) * gauss(rng);
+        if (z < noise.min_range || z > noise.max_range) z = nan;
+        if (noise.dropout > 0.0 && uniform(rng) < noise.dropout) z = nan;
+      }
+      float xyz[3] = {nan, nan, nan};
+      if (!std::isnan(z)) {
+        xyz[0] = static_cast<float>((col - k.cx) * z / k.fx);
+        xyz[1] = static_cast<float>((row - k.cy) * z / k.fy);
+        xyz[2] = z;
+      }
+      // PCL packs colour as 0x00RRGGBB in the bytes of a float.
+      const uint32_t packed = (uint32_t(src_rgb[col * 3]) << 16) |
+                              (uint32_t(src_rgb[col * 3 + 1]) << 8) | uint32_t(src_rgb[col * 3 + 2]);
+      std::memcpy(out, xyz, sizeof(xyz));
+      std::memcpy(out + 12, &packed, 4);
+    }
+  }
+}
+
+}  // namespace rason_sim

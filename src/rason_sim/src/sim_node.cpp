@@ -1,0 +1,485 @@
+// rason_sim_node: two (or more) Kobuki-like robots and a Kinect-like camera in MuJoCo,
+// publishing what kobuki_node and freenect publish. See README.md for topics and params.
+#include <geometry_msgs/Pose2D.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <geometry_msgs/Twist.h>
+#include <mujoco/mujoco.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <rosgraph_msgs/Clock.h>
+#include <sensor_msgs/CameraInfo.h>
+#include <sensor_msgs/Image.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "rason_sim/depth_camera.h"
+#include "rason_sim/diff_drive.h"
+#include "rason_sim/renderer.h"
+#include "rason_sim/world.h"
+
+namespace rason_sim {
+namespace {
+
+// ---- parameters --------------------------------------------------------------------------
+
+double number(const XmlRpc::XmlRpcValue& v, const std::string& what) {
+  if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) return static_cast<double>(v);
+  if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) return static_cast<int>(v);
+  throw std::invalid_argument(what + " must be a number");
+}
+
+double field(XmlRpc::XmlRpcValue& s, const char* key, double fallback, const std::string& what) {
+  if (s.getType() != XmlRpc::XmlRpcValue::TypeStruct || !s.hasMember(key)) return fallback;
+  return number(s[key], what + "/" + key);
+}
+
+bool flag(XmlRpc::XmlRpcValue& s, const char* key, bool fallback) {
+  if (s.getType() != XmlRpc::XmlRpcValue::TypeStruct || !s.hasMember(key)) return fallback;
+  if (s[key].getType() != XmlRpc::XmlRpcValue::TypeBoolean)
+    throw std::invalid_argument(std::string(key) + " must be true or false");
+  return static_cast<bool>(s[key]);
+}
+
+XmlRpc::XmlRpcValue structParam(const ros::NodeHandle& pnh, const std::string& key) {
+  XmlRpc::XmlRpcValue value;
+  if (pnh.getParam(key, value) && value.getType() != XmlRpc::XmlRpcValue::TypeStruct)
+    throw std::invalid_argument("~" + key + " must be a dictionary");
+  return value;
+}
+
+WorldConfig worldFromParams(const ros::NodeHandle& pnh) {
+  WorldConfig world;
+  XmlRpc::XmlRpcValue room = structParam(pnh, "room");
+  world.room_x = field(room, "size_x", world.room_x, "~room");
+  world.room_y = field(room, "size_y", world.room_y, "~room");
+  world.wall_height = field(room, "wall_height", world.wall_height, "~room");
+  pnh.param("ambient", world.ambient, world.ambient);
+  pnh.param("brightness", world.brightness, world.brightness);
+  pnh.param("timestep", world.timestep, world.timestep);
+
+  XmlRpc::XmlRpcValue lights;
+  if (pnh.getParam("lights", lights)) {
+    if (lights.getType() != XmlRpc::XmlRpcValue::TypeArray)
+      throw std::invalid_argument("~lights must be a list of {x, y, z, intensity}");
+    for (int i = 0; i < lights.size(); ++i) {
+      LightConfig light;
+      light.x = field(lights[i], "x", light.x, "~lights");
+      light.y = field(lights[i], "y", light.y, "~lights");
+      light.z = field(lights[i], "z", light.z, "~lights");
+      light.intensity = field(lights[i], "intensity", light.intensity, "~lights");
+      world.lights.push_back(light);
+    }
+  } else {
+    world.lights.push_back(LightConfig());
+  }
+
+  XmlRpc::XmlRpcValue boxes;
+  if (pnh.getParam("boxes", boxes)) {
+    if (boxes.getType() != XmlRpc::XmlRpcValue::TypeArray)
+      throw std::invalid_argument("~boxes must be a list of {x, y, z, size_x, size_y, size_z, yaw}");
+    for (int i = 0; i < boxes.size(); ++i) {
+      BoxConfig box;
+      box.x = field(boxes[i], "x", box.x, "~boxes");
+      box.y = field(boxes[i], "y", box.y, "~boxes");
+      box.z = field(boxes[i], "z", box.z, "~boxes");
+      box.size_x = field(boxes[i], "size_x", box.size_x, "~boxes");
+      box.size_y = field(boxes[i], "size_y", box.size_y, "~boxes");
+      box.size_z = field(boxes[i], "size_z", box.size_z, "~boxes");
+      box.yaw = field(boxes[i], "yaw", box.yaw, "~boxes");
+      world.boxes.push_back(box);
+    }
+  }
+
+  XmlRpc::XmlRpcValue camera = structParam(pnh, "camera");
+  world.camera.width = static_cast<int>(field(camera, "width", world.camera.width, "~camera"));
+  world.camera.height = static_cast<int>(field(camera, "height", world.camera.height, "~camera"));
+  world.camera.horizontal_fov_deg = field(camera, "hfov", world.camera.horizontal_fov_deg, "~camera");
+  world.camera.height_m = field(camera, "height_m", world.camera.height_m, "~camera");
+
+  std::vector<std::string> names;
+  if (!pnh.getParam("robots", names)) throw std::invalid_argument("~robots (list of names) is not set");
+  for (const std::string& name : names) {
+    RobotConfig robot;
+    robot.name = name;
+    XmlRpc::XmlRpcValue s = structParam(pnh, name);
+    robot.start.x = field(s, "x", 0.0, "~" + name);
+    robot.start.y = field(s, "y", 0.0, "~" + name);
+    robot.start.yaw = field(s, "yaw", 0.0, "~" + name);
+    robot.camera = flag(s, "camera", false);
+    robot.left_marker = flag(s, "left_marker", false);
+    robot.right_marker = flag(s, "right_marker", false);
+    world.robots.push_back(robot);
+  }
+  validate(world);
+  return world;
+}
+
+// ---- one simulated robot ----------------------------------------------------------------
+
+struct Robot {
+  RobotConfig config;
+  int root_qpos = -1, root_qvel = -1, body = -1, camera = -1;
+  int left_qpos = -1, right_qpos = -1, left_dof = -1, right_dof = -1;
+  int left_motor = -1, right_motor = -1;
+  double left_integral = 0.0, right_integral = 0.0;  // servo's integral term (rad)
+  WheelOdometry odometry;
+  double linear = 0.0, angular = 0.0, last_command = -1e9;
+  bool teleport = false;
+  geometry_msgs::Pose2D teleport_pose;
+  ros::Subscriber cmd_vel_sub, set_pose_sub;
+  ros::Publisher odom_pub, true_pose_pub, image_pub, cloud_pub, info_pub;
+
+  Robot(const RobotConfig& c, const BaseGeometry& base) : config(c), odometry(base) {}
+};
+
+int requireId(const mjModel* m, mjtObj type, const std::string& name) {
+  const int id = mj_name2id(m, type, name.c_str());
+  if (id < 0) throw std::runtime_error("MuJoCo model has no '" + name + "'");
+  return id;
+}
+
+geometry_msgs::Quaternion yawQuaternion(double yaw) {
+  geometry_msgs::Quaternion q;
+  q.z = std::sin(yaw / 2.0);
+  q.w = std::cos(yaw / 2.0);
+  return q;
+}
+
+class Simulator {
+ public:
+  Simulator(ros::NodeHandle& nh, ros::NodeHandle& pnh) : world_(worldFromParams(pnh)) {
+    pnh.param("real_time_factor", real_time_factor_, 1.0);
+    pnh.param("odom_rate", odom_rate_, 50.0);
+    pnh.param("camera_rate", camera_rate_, 10.0);
+    pnh.param("clock_rate", clock_rate_, 100.0);
+    pnh.param("cmd_vel_timeout", cmd_vel_timeout_, 0.6);
+    pnh.param("max_sim_time", max_sim_time_, 0.0);
+    int seed = 1;
+    pnh.param("seed", seed, 1);
+    rng_.seed(static_cast<unsigned>(seed));
+    XmlRpc::XmlRpcValue camera = structParam(pnh, "camera");
+    noise_.scale = field(camera, "depth_noise", 1.0, "~camera");
+    noise_.dropout = field(camera, "depth_dropout", 0.0, "~camera");
+    noise_.min_range = world_.camera.min_range;
+    noise_.max_range = world_.camera.max_range;
+    if (real_time_factor_ < 0.0 || odom_rate_ <= 0.0 || camera_rate_ <= 0.0 || clock_rate_ <= 0.0)
+      throw std::invalid_argument("rates must be > 0 and real_time_factor >= 0");
+    if (noise_.dropout < 0.0 || noise_.dropout >= 1.0)
+      throw std::invalid_argument("~camera/depth_dropout must be in [0, 1)");
+
+    loadModel();
+    intrinsics_ = intrinsicsFor(world_.camera);
+    clock_pub_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 10);
+    tf_pub_ = nh.advertise<tf2_msgs::TFMessage>("/tf", 100);
+    tf_static_pub_ = nh.advertise<tf2_msgs::TFMessage>("/tf_static", 1, true);
+    for (const RobotConfig& config : world_.robots) setUpRobot(nh, config);
+    publishStaticTransforms();
+    ROS_INFO("rason_sim: %zu robots, real-time factor %.2f (0 = as fast as possible), seed %d",
+             robots_.size(), real_time_factor_, seed);
+  }
+
+  ~Simulator() {
+    renderer_.reset();
+    if (data_) mj_deleteData(data_);
+    if (model_) mj_deleteModel(model_);
+  }
+
+  void run() {
+    const double control_period = 1.0 / clock_rate_;
+    const int substeps = std::max(1, static_cast<int>(std::lround(control_period / model_->opt.timestep)));
+    const auto wall_start = std::chrono::steady_clock::now();
+    double next_odom = 0.0, next_camera = 0.0;
+    while (ros::ok()) {
+      ros::spinOnce();
+      const double now = data_->time;
+      for (auto& robot : robots_) applyCommands(*robot, now, substeps * model_->opt.timestep);
+      for (int i = 0; i < substeps; ++i) mj_step(model_, data_);
+      const double t = data_->time;
+      rosgraph_msgs::Clock clock;
+      clock.clock = ros::Time(t);
+      clock_pub_.publish(clock);
+      if (t >= next_odom) {
+        publishOdometry(t);
+        next_odom += 1.0 / odom_rate_;
+        if (next_odom < t) next_odom = t;  // never try to catch up with a burst
+      }
+      if (t >= next_camera) {
+        for (auto& robot : robots_) publishCamera(*robot, t);
+        next_camera += 1.0 / camera_rate_;
+        if (next_camera < t) next_camera = t;
+      }
+      if (max_sim_time_ > 0.0 && t >= max_sim_time_) break;
+      if (real_time_factor_ > 0.0) {
+        // Wall-clock pacing: ros::Rate would follow /clock, which this node drives.
+        const auto due = wall_start + std::chrono::duration<double>(t / real_time_factor_);
+        std::this_thread::sleep_until(due);
+      }
+    }
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    ROS_INFO("rason_sim: simulated %.1f s in %.1f s wall time (real-time factor %.2f)",
+             data_->time, wall, wall > 0 ? data_->time / wall : 0.0);
+  }
+
+ private:
+  void loadModel() {
+    const std::string xml = buildMjcf(world_);
+    // MuJoCo 2.2 has no load-from-string: go through its virtual file system.
+    std::unique_ptr<mjVFS> vfs(new mjVFS);
+    mj_defaultVFS(vfs.get());
+    const char* file = "rason_world.xml";
+    if (mj_makeEmptyFileVFS(vfs.get(), file, static_cast<int>(xml.size())) != 0)
+      throw std::runtime_error("MuJoCo VFS is full");
+    const int index = mj_findFileVFS(vfs.get(), file);
+    std::memcpy(vfs->filedata[index], xml.data(), xml.size());
+    char error[1000] = "";
+    model_ = mj_loadXML(file, vfs.get(), error, sizeof(error));
+    mj_deleteVFS(vfs.get());
+    if (!model_) throw std::runtime_error(std::string("MuJoCo rejected the world: ") + error);
+    data_ = mj_makeData(model_);
+    mj_forward(model_, data_);
+    for (const RobotConfig& robot : world_.robots) {
+      if (robot.camera) {
+        renderer_.reset(new OffscreenRenderer(model_, world_.camera.width, world_.camera.height));
+        break;
+      }
+    }
+  }
+
+  void setUpRobot(ros::NodeHandle& nh, const RobotConfig& config) {
+    auto robot = std::make_shared<Robot>(config, world_.base);
+    const std::string& n = config.name;
+    const int root = requireId(model_, mjOBJ_JOINT, rootJointName(n));
+    robot->root_qpos = model_->jnt_qposadr[root];
+    robot->root_qvel = model_->jnt_dofadr[root];
+    robot->body = requireId(model_, mjOBJ_BODY, n);
+    robot->left_qpos = model_->jnt_qposadr[requireId(model_, mjOBJ_JOINT, wheelJointName(n, true))];
+    robot->right_qpos = model_->jnt_qposadr[requireId(model_, mjOBJ_JOINT, wheelJointName(n, false))];
+    robot->left_dof = model_->jnt_dofadr[requireId(model_, mjOBJ_JOINT, wheelJointName(n, true))];
+    robot->right_dof = model_->jnt_dofadr[requireId(model_, mjOBJ_JOINT, wheelJointName(n, false))];
+    robot->left_motor = requireId(model_, mjOBJ_ACTUATOR, wheelActuatorName(n, true));
+    robot->right_motor = requireId(model_, mjOBJ_ACTUATOR, wheelActuatorName(n, false));
+    Robot* raw = robot.get();
+    robot->cmd_vel_sub = nh.subscribe<geometry_msgs::Twist>(
+        n + "/cmd_vel", 10, [this, raw](const geometry_msgs::Twist::ConstPtr& msg) { onCmdVel(*raw, *msg); });
+    robot->set_pose_sub = nh.subscribe<geometry_msgs::Pose2D>(
+        n + "/set_pose", 10, [raw](const geometry_msgs::Pose2D::ConstPtr& msg) {
+          if (std::isfinite(msg->x) && std::isfinite(msg->y) && std::isfinite(msg->theta)) {
+            raw->teleport = true;
+            raw->teleport_pose = *msg;
+          } else {
+            ROS_WARN("rason_sim: ignoring set_pose with a non-finite value for %s", raw->config.name.c_str());
+          }
+        });
+    robot->odom_pub = nh.advertise<nav_msgs::Odometry>(n + "/odom", 50);
+    robot->true_pose_pub = nh.advertise<geometry_msgs::PoseStamped>(n + "/true_pose", 50);
+    if (config.camera) {
+      robot->camera = requireId(model_, mjOBJ_CAMERA, cameraName(n));
+      robot->image_pub = nh.advertise<sensor_msgs::Image>(n + "/camera/rgb/image_raw", 2);
+      robot->cloud_pub = nh.advertise<sensor_msgs::PointCloud2>(n + "/camera/depth_registered/points", 2);
+      robot->info_pub = nh.advertise<sensor_msgs::CameraInfo>(n + "/camera/rgb/camera_info", 2);
+    }
+    robots_.push_back(robot);
+  }
+
+  void onCmdVel(Robot& robot, const geometry_msgs::Twist& msg) {
+    if (!std::isfinite(msg.linear.x) || !std::isfinite(msg.angular.z)) {
+      ROS_WARN_THROTTLE(5.0, "rason_sim: %s/cmd_vel with a non-finite value ignored", robot.config.name.c_str());
+      return;
+    }
+    robot.linear = msg.linear.x;
+    robot.angular = msg.angular.z;
+    robot.last_command = data_->time;
+  }
+
+  // Kobuki's wheels run a velocity loop with zero steady-state error; MuJoCo's velocity
+  // servo is proportional only, so add an integral correction to its set point.
+  static double servoSetPoint(double target, double measured, double& integral, double dt) {
+    constexpr double kIntegralGain = 8.0, kMaxCorrection = 4.0;  // 1/s, rad/s
+    if (target == 0.0) {
+      integral = 0.0;  // stopping: no wind-up carried into the next motion
+      return 0.0;
+    }
+    integral = std::clamp(integral + (target - measured) * dt, -kMaxCorrection / kIntegralGain,
+                          kMaxCorrection / kIntegralGain);
+    return target + kIntegralGain * integral;
+  }
+
+  void applyCommands(Robot& robot, double now, double dt) {
+    if (robot.teleport) {
+      robot.teleport = false;
+      double* q = data_->qpos + robot.root_qpos;
+      q[0] = robot.teleport_pose.x;
+      q[1] = robot.teleport_pose.y;
+      q[2] = 0.0;
+      q[3] = std::cos(robot.teleport_pose.theta / 2.0);
+      q[4] = q[5] = 0.0;
+      q[6] = std::sin(robot.teleport_pose.theta / 2.0);
+      for (int i = 0; i < 6; ++i) data_->qvel[robot.root_qvel + i] = 0.0;
+      mj_forward(model_, data_);
+    }
+    // Like kobuki_node, stop when commands stop arriving.
+    const bool fresh = now - robot.last_command <= cmd_vel_timeout_;
+    const WheelSpeeds speeds =
+        wheelSpeedsFor(fresh ? robot.linear : 0.0, fresh ? robot.angular : 0.0, world_.base);
+    data_->ctrl[robot.left_motor] =
+        servoSetPoint(speeds.left, data_->qvel[robot.left_dof], robot.left_integral, dt);
+    data_->ctrl[robot.right_motor] =
+        servoSetPoint(speeds.right, data_->qvel[robot.right_dof], robot.right_integral, dt);
+  }
+
+  void publishOdometry(double t) {
+    const ros::Time stamp(t);
+    tf2_msgs::TFMessage tf;
+    for (auto& robot : robots_) {
+      Robot& r = *robot;
+      r.odometry.update(data_->qpos[r.left_qpos], data_->qpos[r.right_qpos], t);
+      nav_msgs::Odometry odom;
+      odom.header.stamp = stamp;
+      odom.header.frame_id = r.config.name + "/odom";
+      odom.child_frame_id = r.config.name + "/base_footprint";
+      odom.pose.pose.position.x = r.odometry.x();
+      odom.pose.pose.position.y = r.odometry.y();
+      odom.pose.pose.orientation = yawQuaternion(r.odometry.yaw());
+      odom.twist.twist.linear.x = r.odometry.linear();
+      odom.twist.twist.angular.z = r.odometry.angular();
+      for (int i : {0, 7, 35}) odom.pose.covariance[i] = 0.1;  // x, y, yaw (kobuki_node's values)
+      for (int i : {14, 21, 28}) odom.pose.covariance[i] = 1e6;  // not measured
+      r.odom_pub.publish(odom);
+
+      geometry_msgs::TransformStamped transform;
+      transform.header = odom.header;
+      transform.child_frame_id = odom.child_frame_id;
+      transform.transform.translation.x = r.odometry.x();
+      transform.transform.translation.y = r.odometry.y();
+      transform.transform.rotation = odom.pose.pose.orientation;
+      tf.transforms.push_back(transform);
+
+      geometry_msgs::PoseStamped truth;
+      truth.header.stamp = stamp;
+      truth.header.frame_id = "world";
+      const double* p = data_->xpos + 3 * r.body;
+      const double* q = data_->xquat + 4 * r.body;
+      truth.pose.position.x = p[0];
+      truth.pose.position.y = p[1];
+      truth.pose.position.z = p[2];
+      truth.pose.orientation.w = q[0];
+      truth.pose.orientation.x = q[1];
+      truth.pose.orientation.y = q[2];
+      truth.pose.orientation.z = q[3];
+      r.true_pose_pub.publish(truth);
+    }
+    tf_pub_.publish(tf);
+  }
+
+  void publishCamera(Robot& robot, double t) {
+    if (robot.camera < 0 || !renderer_) return;
+    const bool wanted = robot.image_pub.getNumSubscribers() + robot.cloud_pub.getNumSubscribers() > 0;
+    if (!wanted) return;  // rendering is the costly part; skip it when nobody looks
+    renderer_->render(model_, data_, robot.camera, rgb_, depth_);
+    sensor_msgs::Image image;
+    sensor_msgs::PointCloud2 cloud;
+    buildFrame(intrinsics_, rgb_.data(), depth_.data(), renderer_->nearPlane(), renderer_->farPlane(),
+               noise_, rng_, image.data, cloud.data);
+    const ros::Time stamp(t);
+    const std::string frame = robot.config.name + "/camera_rgb_optical_frame";
+    image.header.stamp = stamp;
+    image.header.frame_id = frame;
+    image.width = intrinsics_.width;
+    image.height = intrinsics_.height;
+    image.encoding = "rgb8";
+    image.step = intrinsics_.width * 3;
+    robot.image_pub.publish(image);
+
+    cloud.header = image.header;
+    cloud.width = intrinsics_.width;
+    cloud.height = intrinsics_.height;
+    cloud.is_dense = false;
+    cloud.is_bigendian = false;
+    cloud.point_step = kPointStep;
+    cloud.row_step = kPointStep * intrinsics_.width;
+    const char* names[] = {"x", "y", "z", "rgb"};
+    for (int i = 0; i < 4; ++i) {
+      sensor_msgs::PointField f;
+      f.name = names[i];
+      f.offset = 4 * i;
+      f.datatype = sensor_msgs::PointField::FLOAT32;
+      f.count = 1;
+      cloud.fields.push_back(f);
+    }
+    robot.cloud_pub.publish(cloud);
+
+    sensor_msgs::CameraInfo info;
+    info.header = image.header;
+    info.width = intrinsics_.width;
+    info.height = intrinsics_.height;
+    info.distortion_model = "plumb_bob";
+    info.D.assign(5, 0.0);
+    info.K = {intrinsics_.fx, 0, intrinsics_.cx, 0, intrinsics_.fy, intrinsics_.cy, 0, 0, 1};
+    info.R = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    info.P = {intrinsics_.fx, 0, intrinsics_.cx, 0, 0, intrinsics_.fy, intrinsics_.cy, 0, 0, 0, 1, 0};
+    robot.info_pub.publish(info);
+  }
+
+  void publishStaticTransforms() {
+    tf2_msgs::TFMessage tf;
+    for (auto& robot : robots_) {
+      if (robot->camera < 0) continue;
+      // base_footprint -> optical frame (z forward, x right, y down).
+      geometry_msgs::TransformStamped t;
+      t.header.stamp = ros::Time(0);
+      t.header.frame_id = robot->config.name + "/base_footprint";
+      t.child_frame_id = robot->config.name + "/camera_rgb_optical_frame";
+      t.transform.translation.x = world_.camera.forward_m;
+      t.transform.translation.z = world_.camera.height_m;
+      t.transform.rotation.x = -0.5;
+      t.transform.rotation.y = 0.5;
+      t.transform.rotation.z = -0.5;
+      t.transform.rotation.w = 0.5;
+      tf.transforms.push_back(t);
+    }
+    if (!tf.transforms.empty()) tf_static_pub_.publish(tf);
+  }
+
+  WorldConfig world_;
+  double real_time_factor_ = 1.0, odom_rate_ = 50.0, camera_rate_ = 10.0, clock_rate_ = 100.0;
+  double cmd_vel_timeout_ = 0.6, max_sim_time_ = 0.0;
+  DepthNoise noise_;
+  std::mt19937 rng_;
+  mjModel* model_ = nullptr;
+  mjData* data_ = nullptr;
+  std::unique_ptr<OffscreenRenderer> renderer_;
+  Intrinsics intrinsics_;
+  std::vector<unsigned char> rgb_;
+  std::vector<float> depth_;
+  std::vector<std::shared_ptr<Robot>> robots_;
+  ros::Publisher clock_pub_, tf_pub_, tf_static_pub_;
+};
+
+}  // namespace
+}  // namespace rason_sim
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "rason_sim");
+  ros::NodeHandle nh;
+  ros::NodeHandle pnh("~");
+  try {
+    rason_sim::Simulator simulator(nh, pnh);
+    simulator.run();
+  } catch (const std::exception& e) {
+    ROS_FATAL("rason_sim: %s", e.what());
+    return 1;
+  }
+  return 0;
+}
