@@ -80,23 +80,30 @@ class SimRobot(object):
                 self._lock.wait(0.1)
             return self._pose
 
-    def wait_connected(self, timeout=15.0):
-        """Wait until the decomposer and the simulator listen to us."""
+    def wait_connected(self, actions=True, timeout=15.0):
+        """Wait until the simulator (and, with ``actions``, the decomposer) listen to us:
+        a message published before the connection is up is lost."""
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline and not rospy.is_shutdown():
-            if self._actions.get_num_connections() and self._teleport.get_num_connections():
+            if self._teleport.get_num_connections() and (
+                    not actions or self._actions.get_num_connections()):
                 return True
             time.sleep(0.05)
         return False
 
     def teleport(self, x, y, yaw, settle=0.3):
         """Put the robot at (x, y, yaw rad) and wait (sim time) until the pose shows it."""
+        if not self.wait_connected(actions=False):
+            raise RuntimeError('the simulator does not listen to /%s/set_pose' % self.name)
         self._teleport.publish(Pose2D(x=x, y=y, theta=yaw))
         deadline = time.monotonic() + 10.0
-        while time.monotonic() < deadline:
+        while True:
             p = self.pose()
-            if math.hypot(p[0] - x, p[1] - y) < 0.01:
+            if math.hypot(p[0] - x, p[1] - y) < 0.01 and abs(
+                    math.remainder(p[2] - yaw, 2 * math.pi)) < 0.01:
                 break
+            if time.monotonic() > deadline:
+                raise RuntimeError('%s did not reach the teleport pose: %s' % (self.name, p))
             time.sleep(0.02)
         rospy.sleep(settle)
 
