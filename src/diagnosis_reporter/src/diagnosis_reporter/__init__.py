@@ -1,0 +1,1 @@
+"""report_diagnosis(Component, Evidence) -> /diagnostics."""

@@ -1,0 +1,184 @@
+// Faulty: the robot with the fault (thesis §6.4, Appendix A Listing A.1), on a robot of
+// its own with its own rason_mas. The plans are the thesis's; changes are marked
+//   FIX       needed on real Jason or on noisy perception (DESIGN.md §3),
+//   IMPROVED  asked for by thesis §8.1, or an explicit ending when evidence is missing
+//             (a wrong diagnosis is worse than "undiagnosed").
+
+/* Initial beliefs and rules */
+
+// FIX: perceived depth and angle are never exactly equal twice; "the same place" is
+// within these tolerances (metres, degrees).
+samePlaceTolerance(0.05, 2.0).
+samePlace(Deg, Depth, Deg1, Depth1)
+    :- samePlaceTolerance(DT, AT) & math.abs(Depth1 - Depth) < DT & math.abs(Deg1 - Deg) < AT.
+
+// The thesis's threshold on the heading change (degrees).
+headingThreshold(8).
+
+// FIX: Yaw1 - (Yaw + (Deg1 - Deg)) is the heading change (clockwise positive, see
+// vision_synth) only modulo 360; bring it into (-180, 180].
+headingChange(Deg, Yaw, Deg1, Yaw1, C) :- D = Yaw1 - (Yaw + (Deg1 - Deg)) & wrapped(D, C).
+wrapped(D, C) :- D > 180 & C = D - 360.
+wrapped(D, C) :- D <= -180 & C = D + 360.
+wrapped(D, D) :- D > -180 & D <= 180.
+
+// IMPROVED: how long (ms) Faulty waits, after asking for help, for a diagnosis.
+helpTimeout(120000).
+
+/* Initial goals */
+
+!start.
+
+/* Plans */
+
+// IMPROVED: instead of a fixed .wait(4000), start once another robot is present (or
+// after 20 s alone).
++!start
+<- .my_name(Me);
+    .wait(present(Other) & Other \== Me, 20000);
+    !goToDestination.
+-!start <- .print("No other robot around; going alone."); !goToDestination.
+
++!goToDestination
+<- .print("Moving to Destination");
+    move(1);
+    move(-1);
+    .print("Arriving at destination");
+    !conclude(none, "destination reached").
+
+// FIX: the thesis stored +reason(R1), but Jason sorts the failure annotations, so R1 is
+// code(move(1)); the reason is the member no_progress or bad_move of [R1|Rest].
+-!goToDestination[R1 | Rest]
+: triedAlone & .member(Reason, [no_progress, bad_move]) & .member(Reason, [R1 | Rest])
+<- .print("Cannot solve problem alone, asking for help.");
+    +reason(Reason);
+    !!helpWatchdog;
+    !askForHelp.
+
+-!goToDestination[R1 | Rest]
+<- .print("something went wrong...",R1);
+    !diagnoseAlone([R1| Rest]);
+    !goToDestination.
+
++!diagnoseAlone(Reasons)
+: .member(no_progress, Reasons)
+| .member(bad_move, Reasons)
+<- .print("Running local diagnosis");
+    .print("diagnose alone has failed");
+    +triedAlone;
+    .print("Finished diagnosis").
+
+// IMPROVED: a failure that is neither no_progress nor bad_move (timeout, no decomposer,
+// ...) is not a case this diagnosis knows.
++!diagnoseAlone([R1 | Rest])
+<- .print("This failure is not one I can diagnose: ", R1);
+    !conclude(undiagnosed, "motion failed without no_progress or bad_move").
+
+// IMPROVED: a broadcast to nobody would wait for ever.
++!askForHelp
+: .my_name(Me) & .all_names(Names) & .delete(Me, Names, Others) & Others \== []
+<- .broadcast(achieve, helpme).
++!askForHelp
+<- !conclude(undiagnosed, "no other robot to ask for help").
+
+// IMPROVED: the help may never come (helper lost, perception lost, ...).
++!helpWatchdog : helpTimeout(T)
+<- .wait(T);
+    !conclude(undiagnosed, "no diagnosis within the help timeout").
+
+//Plans to help diagnose
++!tryMove[source(R)]
+<- .print("Trying to move for ",R);
+    move(0.3);
+    .print("It was just a false positive.");
+    -reason(_);
+    -triedAlone;
+    .send(R,achieve,thanks);
+    !conclude(none, "moved as planned while observed (false positive)").
+
+// FIX: the helper's plan is +!giveFeedback; the thesis sent givemeFeedback.
+-!tryMove[source(R)]
+<- .print(" requesting some feedback from ",R);
+    .send(R,achieve,giveFeedback).
+
++found(Me)[source(R)]
+: .my_name(Me)
+<- .print(R," found me, asking to track me");
+    .send(R,achieve,trackMe).
+
+// IMPROVED: the helper says when it cannot see us.
++notFound(Me)[source(R)]
+: .my_name(Me)
+<- .print(R," could not find me");
+    !conclude(undiagnosed, "the helper could not find me").
+
++!noFeedback(Why)[source(R)]
+<- .print(R," cannot give feedback: ", Why);
+    .send(R,achieve,thanks);
+    !conclude(undiagnosed, Why).
+
+// FIX (all feedback plans): the thesis printed an unbound Helper; the sender is R.
+// FIX: samePlace instead of Depth == Depth1 & Deg == Deg1.
++!feedback(initPos(Deg,Depth,Yaw),currPos(Deg1,Depth1,Yaw1))[source(R)]
+: reason(no_progress)
+  & not samePlace(Deg, Depth, Deg1, Depth1)
+<- !reportFeedback(R, Deg, Depth, Yaw, Deg1, Depth1, Yaw1);
+    .print("fault in odometry system, thanks ", R);
+    .send(R,achieve,thanks);
+    !conclude(odometry, "no progress measured, but seen moving").
+
++!feedback(initPos(Deg,Depth,Yaw),currPos(Deg1,Depth1,Yaw1))[source(R)]
+: reason(no_progress)
+  & samePlace(Deg, Depth, Deg1, Depth1)
+<- !reportFeedback(R, Deg, Depth, Yaw, Deg1, Depth1, Yaw1);
+    .print("fault in both actuators, thanks ",R);
+    .send(R, achieve, thanks);
+    !conclude(both_actuators, "no progress measured, and seen in the same place").
+
++!feedback(initPos(Deg,Depth,Yaw),currPos(Deg1,Depth1,Yaw1))[source(R)]
+: reason(bad_move)
+  & headingChange(Deg, Yaw, Deg1, Yaw1, C) & headingThreshold(T)
+  & math.abs(C) < T
+<- !reportFeedback(R, Deg, Depth, Yaw, Deg1, Depth1, Yaw1);
+    .print("it was a false positive for bad_move, thanks ",R);
+    .send(R, achieve, thanks);
+    !conclude(none, "bad_move, but the heading change seen was below the threshold").
+
++!feedback(initPos(Deg,Depth,Yaw),currPos(Deg1,Depth1,Yaw1))[source(R)]
+: reason(bad_move)
+  & headingChange(Deg, Yaw, Deg1, Yaw1, C) & headingThreshold(T)
+  & C > T
+<- !reportFeedback(R, Deg, Depth, Yaw, Deg1, Depth1, Yaw1);
+    .print("right actuator has problems, thanks ",R);
+    .send(R, achieve, thanks);
+    !conclude(right_actuator, "bad_move, seen turning clockwise").
+
++!feedback(initPos(Deg,Depth,Yaw),currPos(Deg1,Depth1,Yaw1))[source(R)]
+: reason(bad_move)
+  & headingChange(Deg, Yaw, Deg1, Yaw1, C) & headingThreshold(T)
+  & C < -T
+<- !reportFeedback(R, Deg, Depth, Yaw, Deg1, Depth1, Yaw1);
+    .print("left actuator has problems, thanks ",R);
+    .send(R, achieve, thanks);
+    !conclude(left_actuator, "bad_move, seen turning counter-clockwise").
+
++!reportFeedback(R, Deg, Depth, Yaw, Deg1, Depth1, Yaw1)
+<- .print(R," has reported as initial info( pos ",Deg," degrees, depth ",Depth," meters and yaw ",Yaw," degrees )");
+    .print("and current info( pos ",Deg1," degrees, depth ",Depth1," meters and yaw ",Yaw1," degrees )").
+
+// IMPROVED: the diagnosis is reported once (report_diagnosis puts it on /diagnostics),
+// then this robot's agents stop, which ends the scenario.
++!conclude(Component, Evidence) : diagnosed(_)
+<- true.
++!conclude(Component, Evidence)
+<- +diagnosed(Component);
+    .print("Diagnosis: ", Component, " (", Evidence, ")");
+    report_diagnosis(Component, Evidence);
+    !finish.
+-!conclude(Component, Evidence)
+<- .print("could not report the diagnosis");
+    !finish.
+
++!finish
+<- .wait(1000);   // let the last messages (thanks) leave
+    .stopMAS.
