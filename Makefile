@@ -29,7 +29,7 @@ ROSENV := set +u; source $(CURDIR)/devel/setup.bash; set -u;
 .PHONY: help setup apt jason_lib catkin test unit rostest demo bench clean
 
 help:
-	@echo "make demo   - set up, then run the example agent against a fake robot"
+	@echo "make demo   - set up, then run the case study (both actuators faulty) in the simulator"
 	@echo "make test   - set up, then run unit tests (pytest) and rostests"
 	@echo "make setup  - install Debian packages, build jason_lib (Maven) and the catkin workspace"
 	@echo "make bench  - benchmarks (see README)"
@@ -69,7 +69,7 @@ rostest:
 	$(ROSENV) $(PY) src/rason/test/summarize_results.py build/test_results
 
 demo: setup
-	$(ROSENV) roslaunch rason demo.launch
+	$(ROSENV) roslaunch rason faulty_helper.launch fault:=both_actuators
 
 bench: setup
 	@echo "benchmarks are not written yet (issue: Benchmarks)"; exit 1
