@@ -40,14 +40,31 @@ class Perceptions(object):
             self.latest = list(msg.perception)
             self._cond.notify_all()
 
-    def fresh(self, skip=2, timeout=10.0):
-        """The list after ``skip`` more messages (frames rendered before a teleport drain)."""
+    def fresh(self, skip=3, timeout=10.0):
+        """The list once the frames rendered before a teleport have drained: after ``skip``
+        more messages, the first that agrees with the one before it (a busy CPU can hold
+        several old frames in the camera -> synthesizer pipeline)."""
         deadline = time.monotonic() + timeout
         with self._cond:
             target = self.count + skip
-            while self.count < target and time.monotonic() < deadline:
+            previous = None
+            while time.monotonic() < deadline:
+                if self.count >= target:
+                    if previous is not None and same_view(previous, self.latest):
+                        return self.latest
+                    previous = self.latest
+                    target = self.count + 1
                 self._cond.wait(0.1)
-            return self.latest if self.count >= target else None
+            return None
+
+
+def same_view(a, b, angle=0.5, depth=0.02, yaw=2.0):
+    """Two perception lists show the same robots at the same places (within noise)."""
+    ra, rb = parse(a), parse(b)
+    if ra.keys() != rb.keys():
+        return False
+    return all(abs(ra[n][0] - rb[n][0]) < angle and abs(ra[n][1] - rb[n][1]) < depth
+               and abs(wrap_degrees(ra[n][2] - rb[n][2])) < yaw for n in ra)
 
 
 def parse(literals):

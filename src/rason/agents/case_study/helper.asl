@@ -9,6 +9,16 @@ turnRate(10).          // IMPROVED: 10 degrees a step (the thesis used 5), still
 centerThreshold(7).
 settleTime(400).       // FIX: ms for the robots to stop and fresh frames to arrive
 
+// FIX: on a busy CPU the camera -> synthesizer -> belief pipeline can lag the robots by
+// several frames, so a position read right after a motion may show it half done. A
+// position counts once two reads settleTime apart agree within these tolerances
+// (degrees, metres, degrees), at most maxSteadyReads reads.
+steadyTolerance(1.0, 0.02, 3.0).
+steady(D0, P0, Y0, D1, P1, Y1)
+    :- steadyTolerance(TA, TD, TY)
+     & math.abs(D1 - D0) < TA & math.abs(P1 - P0) < TD & math.abs(Y1 - Y0) < TY.
+maxSteadyReads(15).
+
 /* Initial goals */
 !start.
 
@@ -63,32 +73,50 @@ settleTime(400).       // FIX: ms for the robots to stop and fresh frames to arr
 
 +!settle : settleTime(T) <- .wait(T).
 
-// IMPROVED: the initial position is the one seen when tracking starts.
+// IMPROVED: the initial position is the one seen (steadily) when tracking starts.
 +!trackMe[source(R)]
 : helping(R)
-& robot(R,Deg,Depth,Yaw)
-<- -+foundRobot(R,Deg,Depth,Yaw);
+<- !steadyView(R,Deg,Depth,Yaw);
+  -+foundRobot(R,Deg,Depth,Yaw);
   .print("I'm ready.");
   .send(R,achieve,tryMove).
 
-+!trackMe[source(R)]
-: helping(R)
+-!trackMe[source(R)]
 <- .send(R,achieve,noFeedback("the helper lost sight of the robot before it moved")).
 
 +!giveFeedback[source(R)]
 : helping(R)
-<- !settle;
-  !reportFeedback(R).
+<- !reportFeedback(R).
 
 +!reportFeedback(R)
 : foundRobot(R,Deg,Depth,Yaw)
-& robot(R,Deg1,Depth1,Yaw1)
-<- .print("reporting to ",R," -> ",Deg," ",Depth," ",Yaw," / ",Deg1," ",Depth1," ",Yaw1);
+<- !steadyView(R,Deg1,Depth1,Yaw1);
+  .print("reporting to ",R," -> ",Deg," ",Depth," ",Yaw," / ",Deg1," ",Depth1," ",Yaw1);
   .send(R,achieve,feedback(initPos(Deg,Depth,Yaw),currPos(Deg1,Depth1,Yaw1))).
 
-+!reportFeedback(R)
-<- .print("I cannot see ", R, " any more");
+-!reportFeedback(R)
+<- .print("I cannot see ", R, " (steadily) any more");
   .send(R,achieve,noFeedback("the helper lost sight of the robot after it moved")).
+
+// Binds Deg, Depth, Yaw to where R is seen once two reads agree (see steady/6); a frame
+// without R costs one read; fails when the view does not settle within maxSteadyReads.
++!steadyView(R,Deg,Depth,Yaw) <- !steadyView(R,Deg,Depth,Yaw,1).
++!steadyView(R,Deg,Depth,Yaw,N) : maxSteadyReads(M) & N > M
+<- .print("My view of ", R, " did not settle");
+  .fail.
++!steadyView(R,Deg,Depth,Yaw,N)
+: robot(R,D0,P0,Y0)
+& settleTime(T)
+<- .wait(T);
+  if (robot(R,D1,P1,Y1) & steady(D0,P0,Y0,D1,P1,Y1)) {
+    Deg = D1; Depth = P1; Yaw = Y1;
+  } else {
+    !steadyView(R,Deg,Depth,Yaw,N+1);
+  }.
++!steadyView(R,Deg,Depth,Yaw,N)
+: settleTime(T)
+<- .wait(T);
+  !steadyView(R,Deg,Depth,Yaw,N+1).
 
 // IMPROVED: nothing about R is kept after thanks (no stale beliefs, thesis §8.1).
 +!thanks[source(R)]
