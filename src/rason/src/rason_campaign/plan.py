@@ -16,12 +16,13 @@ POSITION_JITTER = 0.05           # metres, uniform ±
 YAW_JITTER = math.radians(3.0)   # radians, uniform ±
 BRIGHTNESS_RANGE = (0.8, 1.2)
 
-# Interaction faults (thesis §7.5-7.6) as launch arguments of faulty_helper.launch.
+# Interaction faults (thesis §7.5-7.6): faulty_helper.launch's interaction:= argument sets
+# them; a jittered argument the interaction sets itself is left out (else it would win).
 INTERACTIONS = {
-    'none': {},
-    'dim': {'brightness': 0.3},                    # the burnt lamp: a dim room
-    'moved_light': {'light_x': 2.5, 'light_y': -3.0},  # light low behind Faulty, shadows
-    'occlusion': {'occlude': 'true'},              # Faulty's orange cylinder hidden
+    'none': (),
+    'dim': ('brightness',),      # the burnt lamp: a room at 30 % light
+    'moved_light': (),           # the light over (2.5, -3) instead of the room's centre
+    'occlusion': (),             # Faulty's orange cylinder hidden
 }
 
 
@@ -98,7 +99,8 @@ def make_plan(faults, runs, seed, interaction='none', rate=1.0, images=False, ji
     """The campaign's runs: ``runs`` per fault, faults in the order given, run numbers
     1..len(faults)*runs, run seed ``seed * 1000 + number``.
 
-    The interaction fault's arguments override the jitter's (``dim`` sets the brightness).
+    The run's ``interaction`` argument names the interaction fault; ``dim`` drops the
+    jittered brightness.
 
     :rtype: list of RunSpec
     :raises PlanError: on bad options.
@@ -116,8 +118,10 @@ def make_plan(faults, runs, seed, interaction='none', rate=1.0, images=False, ji
             number = len(plan) + 1
             run_seed = seed * 1000 + number
             args = jittered_args(run_seed, jitter)
-            args.update(INTERACTIONS[interaction])
+            for name in INTERACTIONS[interaction]:
+                del args[name]
             args.update({'fault': fault, 'seed': run_seed, 'rate': rate,
+                         'interaction': interaction,
                          'images': 'true' if images else 'false'})
             plan.append(RunSpec(number, fault, run_seed, args))
     return plan

@@ -107,6 +107,7 @@ def run(spec, bag_dir, timeout, base_port=11611):
 
     :rtype: RunRecord
     """
+    bag_dir = os.path.abspath(bag_dir)  # roslaunch runs the recorder in ROS_HOME
     bag = os.path.join(bag_dir, spec.name + '.bag')
     log = os.path.join(bag_dir, spec.name + '.log')
     for stale in (bag, bag + '.active'):
@@ -127,6 +128,9 @@ def run(spec, bag_dir, timeout, base_port=11611):
         except subprocess.TimeoutExpired:
             timed_out = True
             _stop(proc)
+        except KeyboardInterrupt:  # the launch is in a session of its own: stop it too
+            _stop(proc)
+            raise
         else:
             _stop_leftovers(proc.pid)
     record = RunRecord(None if timed_out else proc.returncode, round(time.monotonic() - t0, 1),
