@@ -1,0 +1,127 @@
+"""``rosrun rason campaign``: run the case study per fault, then report.
+
+    rosrun rason campaign --faults all --runs 5 --seed 1 --out results/campaign
+
+Writes into --out: plan.json, report.md, results.json and the PNG figures; the bags, the
+launch logs and each run's record go to --bags (default: <out>/bags). --analyze-only
+makes the report again from what --out and --bags hold.
+"""
+import argparse
+import datetime
+import json
+import os
+import shlex
+import sys
+import time
+
+from rason_campaign import figures, plan, report, stats, steps
+
+PLAN_FILE = 'plan.json'
+
+
+def parse_args(argv):
+    p = argparse.ArgumentParser(prog='campaign', description=__doc__.split('\n\n')[0])
+    p.add_argument('--faults', default='all', help='all, or a comma list of %s' %
+                   ', '.join(plan.FAULTS))
+    p.add_argument('--runs', type=int, default=5, help='runs per fault (default 5)')
+    p.add_argument('--seed', type=int, default=1, help='campaign seed (default 1)')
+    p.add_argument('--out', required=True, help='directory of the report')
+    p.add_argument('--bags', help='directory of the bags and logs (default: OUT/bags)')
+    p.add_argument('--rate', type=float, default=1.0, help='simulator real-time factor')
+    p.add_argument('--interaction', default='none', choices=sorted(plan.INTERACTIONS),
+                   help='interaction fault of thesis §7.5-7.6 (default none)')
+    p.add_argument('--no-jitter', action='store_true',
+                   help='nominal start poses and brightness in every run')
+    p.add_argument('--timeout', type=float, default=240.0,
+                   help='wall seconds before a run is stopped (default 240)')
+    p.add_argument('--port', type=int, default=11611,
+                   help='first ROS master port to try (default 11611)')
+    p.add_argument('--images', action='store_true', help='bags also hold the camera images')
+    p.add_argument('--analyze-only', action='store_true',
+                   help='no runs: report again from the bags in --bags')
+    return p.parse_args(argv)
+
+
+def analyze(spec, record, read_events):
+    """Result dict of one run from its record (runner.RunRecord or None) and its bag."""
+    failure = record.failure if record else 'the run was never made'
+    events = []
+    if record is not None:
+        try:
+            events = read_events(record.bag)
+        except IOError as e:
+            failure = '%s; %s' % (failure, e) if failure else str(e)
+    s = steps.extract_steps(events)
+    outcome, reason = steps.judge(spec.fault, s, failure)
+    result = spec.to_dict()
+    result.update({'outcome': outcome, 'reason': reason, 'component': s.component,
+                   'evidence': s.evidence, 'steps': s.durations(), 'boundaries': s.to_dict(),
+                   'wall': record.wall if record else None,
+                   'exit_code': record.exit_code if record else None,
+                   'timed_out': record.timed_out if record else None})
+    return result
+
+
+def progress_start(spec, total):
+    return '[%d/%d] %s seed=%d ... ' % (spec.number, total, spec.fault, spec.seed)
+
+
+def progress_end(result):
+    """e.g. 'correct in 21.3 s (wall 25 s)'; the reason when not correct."""
+    total_s = result['steps']['total']
+    took = ' in %.1f s' % total_s if total_s is not None else ''
+    why = '' if result['outcome'] == 'correct' else ': %s' % result['reason']
+    wall = ' (wall %.0f s)' % result['wall'] if result['wall'] is not None else ''
+    return '%s%s%s%s' % (result['outcome'], took, wall, why)
+
+
+def write_report(out, meta, results):
+    names = figures.make_all(results, out)
+    with open(os.path.join(out, 'report.md'), 'w') as f:
+        f.write(report.markdown(meta, results, names))
+    with open(os.path.join(out, 'results.json'), 'w') as f:
+        f.write(report.results_json(meta, results))
+
+
+def main(argv=None):
+    from rason_campaign import bagread, runner  # ROS only here
+    args = parse_args(sys.argv[1:] if argv is None else argv)
+    bags = args.bags or os.path.join(args.out, 'bags')
+    os.makedirs(bags, exist_ok=True)
+    plan_path = os.path.join(args.out, PLAN_FILE)
+    if args.analyze_only:
+        with open(plan_path) as f:
+            saved = json.load(f)
+        meta, specs = saved['meta'], [plan.RunSpec.from_dict(d) for d in saved['runs']]
+    else:
+        try:
+            specs = plan.make_plan(plan.parse_faults(args.faults), args.runs, args.seed,
+                                   args.interaction, args.rate, args.images,
+                                   jitter=not args.no_jitter)
+        except plan.PlanError as e:
+            sys.exit('campaign: %s' % e)
+        meta = {'command': 'rosrun rason campaign ' + ' '.join(
+                    shlex.quote(a) for a in (sys.argv[1:] if argv is None else argv)),
+                'date': datetime.date.today().isoformat(), 'runs': args.runs,
+                'seed': args.seed, 'rate': args.rate, 'interaction': args.interaction,
+                'jitter': not args.no_jitter, 'timeout': args.timeout}
+        with open(plan_path, 'w') as f:
+            json.dump({'meta': meta, 'runs': [s.to_dict() for s in specs]}, f, indent=1)
+    results = []
+    t0 = time.monotonic()
+    for spec in specs:
+        record_path = os.path.join(bags, spec.name + '.run.json')
+        print(progress_start(spec, len(specs)), end='', flush=True)
+        if args.analyze_only:
+            record = runner.RunRecord.load(record_path) if os.path.exists(record_path) else None
+        else:
+            record = runner.run(spec, bags, args.timeout, args.port)
+        result = analyze(spec, record, bagread.read_events)
+        results.append(result)
+        print(progress_end(result), flush=True)
+    write_report(args.out, meta, results)
+    s = stats.summary(results)
+    print('campaign: %d correct, %d undiagnosed, %d wrong of %d runs in %.0f s; report %s'
+          % (s['counts']['correct'], s['counts']['undiagnosed'], s['counts']['wrong'],
+             s['runs'], time.monotonic() - t0, os.path.join(args.out, 'report.md')))
+    return 0 if s['counts']['wrong'] == 0 else 1

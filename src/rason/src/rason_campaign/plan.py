@@ -1,0 +1,136 @@
+"""Run planning: which runs a campaign makes and the launch arguments of each.
+
+Deterministic: the same (faults, runs, seed, options) give the same plan. Each run has its
+own seed (``seed * 1000 + run number``) which seeds both the simulator and the run's
+jitter of the start poses (about ±5 cm, ±3°) and of the lighting (brightness 0.8-1.2).
+"""
+import math
+import random
+
+FAULTS = ('none', 'left_actuator', 'right_actuator', 'both_actuators', 'odometry')
+
+# The nominal poses of faulty_helper.launch (thesis §7: side by side, 1.5 m apart).
+NOMINAL = {'helper_x': -1.0, 'helper_y': 0.75, 'helper_yaw': 0.0,
+           'faulty_x': -1.0, 'faulty_y': -0.75, 'faulty_yaw': -1.5708}
+POSITION_JITTER = 0.05           # metres, uniform ±
+YAW_JITTER = math.radians(3.0)   # radians, uniform ±
+BRIGHTNESS_RANGE = (0.8, 1.2)
+
+# Interaction faults (thesis §7.5-7.6): faulty_helper.launch's interaction:= argument sets
+# them; a jittered argument the interaction sets itself is left out (else it would win).
+INTERACTIONS = {
+    'none': (),
+    'dim': ('brightness',),      # the burnt lamp: a room at 30 % light
+    'moved_light': (),           # the light over (2.5, -3) instead of the room's centre
+    'occlusion': (),             # Faulty's orange cylinder hidden
+}
+
+
+class PlanError(ValueError):
+    """The campaign's options do not make a plan; the message says why."""
+
+
+class RunSpec(object):
+    """One run: its number (1-based, over the whole campaign), fault, seed and the launch
+    arguments of faulty_helper.launch (without record/bag, which the runner adds)."""
+
+    def __init__(self, number, fault, seed, args):
+        self.number = number
+        self.fault = fault
+        self.seed = seed
+        self.args = args
+
+    @property
+    def name(self):
+        """File-name stem of the run, e.g. ``007_left_actuator_1007``."""
+        return '%03d_%s_%d' % (self.number, self.fault, self.seed)
+
+    def to_dict(self):
+        return {'number': self.number, 'fault': self.fault, 'seed': self.seed,
+                'args': dict(self.args)}
+
+    @classmethod
+    def from_dict(cls, d):
+        return cls(d['number'], d['fault'], d['seed'], dict(d['args']))
+
+    def __eq__(self, other):
+        return isinstance(other, RunSpec) and self.to_dict() == other.to_dict()
+
+    def __repr__(self):
+        return 'RunSpec(%r)' % self.to_dict()
+
+
+def parse_faults(text):
+    """``all`` or a comma-separated list of FAULTS -> tuple of faults, in the order given.
+
+    :raises PlanError: on an unknown or repeated fault.
+    """
+    if text.strip() == 'all':
+        return FAULTS
+    faults = tuple(f.strip() for f in text.split(',') if f.strip())
+    unknown = [f for f in faults if f not in FAULTS]
+    if unknown or not faults:
+        raise PlanError('unknown fault(s) %s; expected all or some of %s'
+                        % (', '.join(unknown) or '(none given)', ', '.join(FAULTS)))
+    if len(set(faults)) != len(faults):
+        raise PlanError('a fault is repeated in %r' % text)
+    return faults
+
+
+def jittered_args(seed, jitter=True):
+    """Start poses and brightness for one run, drawn from ``random.Random(seed)``.
+
+    :rtype: dict of launch argument -> value (floats rounded to what the launch needs)
+    """
+    args = dict(NOMINAL)
+    args['brightness'] = 1.0
+    if not jitter:
+        return args
+    rng = random.Random(seed)
+    for robot in ('helper', 'faulty'):
+        args[robot + '_x'] = round(NOMINAL[robot + '_x'] + rng.uniform(-1, 1) * POSITION_JITTER, 4)
+        args[robot + '_y'] = round(NOMINAL[robot + '_y'] + rng.uniform(-1, 1) * POSITION_JITTER, 4)
+        args[robot + '_yaw'] = round(NOMINAL[robot + '_yaw'] + rng.uniform(-1, 1) * YAW_JITTER, 4)
+    args['brightness'] = round(rng.uniform(*BRIGHTNESS_RANGE), 3)
+    return args
+
+
+def make_plan(faults, runs, seed, interaction='none', rate=1.0, images=False, jitter=True):
+    """The campaign's runs: ``runs`` per fault, faults in the order given, run numbers
+    1..len(faults)*runs, run seed ``seed * 1000 + number``.
+
+    The run's ``interaction`` argument names the interaction fault; ``dim`` drops the
+    jittered brightness.
+
+    :rtype: list of RunSpec
+    :raises PlanError: on bad options.
+    """
+    if runs < 1:
+        raise PlanError('--runs must be at least 1, got %d' % runs)
+    if interaction not in INTERACTIONS:
+        raise PlanError('unknown interaction fault %r; expected one of %s'
+                        % (interaction, ', '.join(INTERACTIONS)))
+    if rate < 0:
+        raise PlanError('--rate must be >= 0, got %s' % rate)
+    plan = []
+    for fault in faults:
+        for _ in range(runs):
+            number = len(plan) + 1
+            run_seed = seed * 1000 + number
+            args = jittered_args(run_seed, jitter)
+            for name in INTERACTIONS[interaction]:
+                del args[name]
+            args.update({'fault': fault, 'seed': run_seed, 'rate': rate,
+                         'interaction': interaction,
+                         'images': 'true' if images else 'false'})
+            plan.append(RunSpec(number, fault, run_seed, args))
+    return plan
+
+
+def launch_arguments(spec, bag):
+    """roslaunch's ``name:=value`` arguments of the run, recording to ``bag``.
+
+    :rtype: list of str
+    """
+    args = dict(spec.args, record='true', bag=bag)
+    return ['%s:=%s' % (k, args[k]) for k in sorted(args)]

@@ -1,0 +1,86 @@
+"""Run planning: deterministic, jitter within bounds, interaction faults as launch args."""
+import math
+
+import pytest
+
+from rason_campaign import plan
+
+
+def test_same_options_same_plan():
+    a = plan.make_plan(plan.FAULTS, 3, 7)
+    b = plan.make_plan(plan.FAULTS, 3, 7)
+    assert a == b
+    assert len(a) == 15
+
+
+def test_numbers_seeds_and_fault_order():
+    p = plan.make_plan(('left_actuator', 'none'), 2, 1)
+    assert [(s.number, s.fault, s.seed) for s in p] == [
+        (1, 'left_actuator', 1001), (2, 'left_actuator', 1002), (3, 'none', 1003), (4, 'none', 1004)]
+    assert p[2].name == '003_none_1003'
+    assert all(s.args['seed'] == s.seed and s.args['fault'] == s.fault for s in p)
+
+
+def test_other_seed_other_jitter():
+    a = plan.make_plan(('none',), 1, 1)[0].args
+    b = plan.make_plan(('none',), 1, 2)[0].args
+    assert a['faulty_x'] != b['faulty_x']
+
+
+def test_jitter_within_bounds_around_nominal():
+    for spec in plan.make_plan(plan.FAULTS, 20, 3):
+        for key, nominal in plan.NOMINAL.items():
+            bound = plan.YAW_JITTER if key.endswith('yaw') else plan.POSITION_JITTER
+            assert abs(spec.args[key] - nominal) <= bound + 1e-4, key
+        assert plan.BRIGHTNESS_RANGE[0] <= spec.args['brightness'] <= plan.BRIGHTNESS_RANGE[1]
+    # Faulty still faces away from Helper (the nominal yaw is -90 degrees).
+    assert abs(math.degrees(spec.args['faulty_yaw']) + 90) <= 3.01
+
+
+def test_no_jitter_is_nominal():
+    args = plan.make_plan(('none',), 1, 5, jitter=False)[0].args
+    assert {k: args[k] for k in plan.NOMINAL} == plan.NOMINAL
+    assert args['brightness'] == 1.0
+
+
+@pytest.mark.parametrize('interaction', sorted(plan.INTERACTIONS))
+def test_interaction_fault_is_a_launch_argument(interaction):
+    spec = plan.make_plan(('odometry',), 2, 1, interaction=interaction)[1]
+    args = plan.launch_arguments(spec, '/tmp/x.bag')
+    assert 'interaction:=%s' % interaction in args
+    # dim sets the brightness itself: a jittered one would override it.
+    assert any(a.startswith('brightness:=') for a in args) == (interaction != 'dim')
+
+
+def test_launch_arguments_record_to_the_bag():
+    spec = plan.make_plan(('both_actuators',), 1, 1, rate=2.0)[0]
+    args = plan.launch_arguments(spec, '/tmp/x.bag')
+    assert 'record:=true' in args and 'bag:=/tmp/x.bag' in args
+    assert 'fault:=both_actuators' in args and 'rate:=2.0' in args and 'seed:=1001' in args
+    assert 'occlude:=true' not in args
+
+
+def test_spec_round_trips_through_dict():
+    spec = plan.make_plan(('none',), 1, 9)[0]
+    assert plan.RunSpec.from_dict(spec.to_dict()) == spec
+
+
+@pytest.mark.parametrize('text,expected', [
+    ('all', plan.FAULTS), ('none', ('none',)),
+    (' odometry, left_actuator ', ('odometry', 'left_actuator'))])
+def test_parse_faults(text, expected):
+    assert plan.parse_faults(text) == expected
+
+
+@pytest.mark.parametrize('text', ['', 'left', 'none,none', 'all,none'])
+def test_parse_faults_rejects(text):
+    with pytest.raises(plan.PlanError):
+        plan.parse_faults(text)
+
+
+@pytest.mark.parametrize('kwargs', [{'runs': 0}, {'interaction': 'fog'}, {'rate': -1}])
+def test_bad_options(kwargs):
+    options = dict(faults=plan.FAULTS, runs=1, seed=1)
+    options.update(kwargs)
+    with pytest.raises(plan.PlanError):
+        plan.make_plan(**options)
