@@ -92,38 +92,43 @@ def measured_cycle(mas, agent, iterations):
     return {'ms': c.ms / c.iterations, 'cpu_percent': cpu}
 
 
-def calibrate(mas, agent, seconds, log):
-    """Warm the JIT up, then the iteration count that makes one run last about ``seconds``."""
-    per_iteration = None
-    for n in (2000, 20000, 20000):
+def calibrate(mas, agent, seconds, log, max_seconds=60.0):
+    """Warm the JIT up (runs of about a second until two in a row agree within 5 %, at most
+    ``max_seconds``), then the iteration count that makes one run last about ``seconds``."""
+    n, previous, per_iteration = 2000, None, None
+    deadline = time.monotonic() + max_seconds
+    while time.monotonic() < deadline:
         per_iteration = mas.harness.cycle(agent, n, timeout=120.0).ms / n
+        if previous is not None and abs(per_iteration - previous) <= 0.05 * previous:
+            break
+        previous = per_iteration
+        n = max(2000, int(1000.0 / per_iteration))
     iterations = max(2000, int(seconds * 1000.0 / per_iteration))
     log('  warm: %.4f ms per iteration -> %d iterations per run' % (per_iteration, iterations))
     return iterations
 
 
 def cycle_tables(procs, harness, modes, perceptions, rates, seconds, log):
-    """Per mode: baseline runs (before each row and at the end) and one cell per perceptions x rate."""
+    """Per mode, one cell per perceptions x rate, each right after a baseline run (no traffic,
+    same agent, same JVM) that it is compared with, so that drifts of a shared machine cancel."""
     out = {}
     for mode in modes:
         log('cycle time, perception_manager=%s' % mode)
         with Mas(procs, harness, 'bench.mas2j', mode) as mas:
             agent = mas.agents[0]
             iterations = calibrate(mas, agent, seconds, log)
-            baselines, cells = [], []
+            cells = []
             for p in perceptions:
-                baselines.append(measured_cycle(mas, agent, iterations))
-                log('  baseline %.4f ms' % baselines[-1]['ms'])
                 for r in rates:
+                    base = measured_cycle(mas, agent, iterations)
                     with Burst(procs, harness, p, r):
                         cell = measured_cycle(mas, agent, iterations)
-                    cell.update(perceptions=p, rate_hz=r)
+                    cell.update(perceptions=p, rate_hz=r, baseline_ms=base['ms'],
+                                baseline_cpu_percent=base['cpu_percent'])
                     cells.append(cell)
-                    log('  %2d perceptions x %2g Hz: %.4f ms, node CPU %.0f%%'
-                        % (p, r, cell['ms'], cell['cpu_percent']))
-            baselines.append(measured_cycle(mas, agent, iterations))
-            log('  baseline %.4f ms' % baselines[-1]['ms'])
-        out[mode] = {'iterations': iterations, 'baselines': baselines, 'cells': cells}
+                    log('  %2d perceptions x %2g Hz: %.4f ms (baseline %.4f ms, %.2fx), node CPU %.0f%%'
+                        % (p, r, cell['ms'], base['ms'], cell['ms'] / base['ms'], cell['cpu_percent']))
+        out[mode] = {'iterations': iterations, 'cells': cells}
     return out
 
 

@@ -15,12 +15,11 @@ def cycle_plot(cycle, path):
     modes = [m for m in ('accumulate', 'per_source') if m in cycle]
     fig, axes = plt.subplots(1, len(modes), figsize=(5 * len(modes), 3.6), sharey=True, squeeze=False)
     for ax, mode in zip(axes[0], modes):
-        base = report.baseline_ms(cycle[mode])
         table = thesis.TABLES[mode]
         for i, p in enumerate(sorted({c['perceptions'] for c in cycle[mode]['cells']})):
             cells = sorted((c for c in cycle[mode]['cells'] if c['perceptions'] == p), key=lambda c: c['rate_hz'])
             colour = 'C%d' % i
-            ax.plot([c['rate_hz'] for c in cells], [c['ms'] / base for c in cells], 'o-', color=colour,
+            ax.plot([c['rate_hz'] for c in cells], [report.slowdown(c) for c in cells], 'o-', color=colour,
                     label='%d perceptions' % p)
             ax.plot(thesis.RATES_HZ, [v / table[1][0] for v in table[p]], '--', color=colour, alpha=0.5)
         ax.axhline(report.CYCLE_RATIO_GOAL, color='grey', lw=0.8, ls=':')
