@@ -36,8 +36,9 @@ class Mas(object):
 
     def __enter__(self):
         try:
-            self.harness.wait_connected(60.0)
             self.agents = self._agent_names(60.0)
+            for name in self.agents:
+                self.harness.handshake(name, 60.0)
         except Exception:
             self.procs.stop(self.proc)
             raise
@@ -92,14 +93,16 @@ def measured_cycle(mas, agent, iterations):
     return {'ms': c.ms / c.iterations, 'cpu_percent': cpu}
 
 
-def calibrate(mas, agent, seconds, log, max_seconds=60.0):
-    """Warm the JIT up (runs of about a second until two in a row agree within 5 %, at most
-    ``max_seconds``), then the iteration count that makes one run last about ``seconds``."""
+def calibrate(mas, agent, seconds, log, min_seconds=10.0, max_seconds=60.0):
+    """Warm the JIT up (runs of about a second for at least ``min_seconds``, then until two in
+    a row agree within 5 %, at most ``max_seconds``), then the iteration count that makes one
+    run last about ``seconds``."""
     n, previous, per_iteration = 2000, None, None
-    deadline = time.monotonic() + max_seconds
-    while time.monotonic() < deadline:
+    start = time.monotonic()
+    while time.monotonic() < start + max_seconds:
         per_iteration = mas.harness.cycle(agent, n, timeout=120.0).ms / n
-        if previous is not None and abs(per_iteration - previous) <= 0.05 * previous:
+        if previous is not None and abs(per_iteration - previous) <= 0.05 * previous \
+                and time.monotonic() > start + min_seconds:
             break
         previous = per_iteration
         n = max(2000, int(1000.0 / per_iteration))

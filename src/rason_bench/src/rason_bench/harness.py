@@ -84,13 +84,19 @@ class Harness(object):
             target = self._heard.get(source, 0) + count
         self._wait(lambda: self._heard.get(source, 0) >= target, timeout, 'messages from %s' % source)
 
-    def wait_connected(self, timeout=30.0):
-        """Wait until the node hosting the agent subscribes to our percepts and events."""
+    def handshake(self, agent, timeout=60.0):
+        """Wait until ``agent`` answers a one-ping run: our percepts reach it, its actions reach
+        us and our feedback reaches it (connection counts can still include a node just stopped)."""
         deadline = time.monotonic() + timeout
-        while self._perceptions.get_num_connections() < 1 or self._events.get_num_connections() < 1:
-            if time.monotonic() > deadline or rospy.is_shutdown():
-                raise Timeout('the agents did not connect within %.0f s' % timeout)
-            time.sleep(0.05)
+        while True:
+            run = self.next_run()
+            self.control(protocol.go_ping(agent, run, 1))
+            try:
+                self.reports(protocol.RoundTrip, run, 1, 0.5)
+                return
+            except Timeout:
+                if time.monotonic() > deadline:
+                    raise Timeout('%s did not answer within %.0f s' % (agent, timeout))
 
     # ---- commands ----
 
