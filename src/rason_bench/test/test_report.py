@@ -3,7 +3,8 @@ from rason_bench import report, thesis
 
 
 def _cell(p, r, ms, base):
-    return {'perceptions': p, 'rate_hz': r, 'ms': ms, 'baseline_ms': base, 'cpu_percent': 50.0}
+    return {'perceptions': p, 'rate_hz': r, 'ms': ms, 'baseline_ms': base, 'cpu_percent': 50.0,
+            'baseline_cpu_percent': 50.0}
 
 
 def _results(ratio_10x50=1.1, rtt=(1.0, 5.0), seen=2.0):
@@ -54,3 +55,9 @@ def test_markdown_has_every_section():
     for heading in ('## Goals', 'thesis Table 5.1', 'thesis Table 5.2', '## Latencies'):
         assert heading in text
     assert '**not met**' not in text
+
+
+def test_cpu_slowdown_counts_the_share_of_the_cores_the_node_got():
+    c = {'ms': 0.03, 'cpu_percent': 50.0, 'baseline_ms': 0.02, 'baseline_cpu_percent': 100.0}
+    assert report.slowdown(c) == 1.5
+    assert report.cpu_slowdown(c) == 0.75   # slower only because it got half a core
