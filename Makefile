@@ -71,8 +71,10 @@ rostest:
 demo: setup
 	$(ROSENV) roslaunch rason faulty_helper.launch fault:=both_actuators
 
+# BENCH_ARGS: e.g. "--quick --seconds 1" for a smoke run (see src/rason_bench).
+BENCH_ARGS ?=
 bench: setup
-	@echo "benchmarks are not written yet (issue: Benchmarks)"; exit 1
+	$(ROSENV) rosrun rason_bench run_bench --out $(CURDIR)/results/bench $(BENCH_ARGS)
 
 clean:
 	rm -rf build devel jason_lib/target build.log

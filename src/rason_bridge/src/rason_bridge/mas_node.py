@@ -32,6 +32,9 @@ def _ros_now_ns():
 
 #: Presence: how often the hub checks links and silences (wall clock, seconds).
 _PRESENCE_TICK = 0.05
+#: How often the log thread looks for lines queued by the agents (seconds), and how many it takes at once.
+_LOG_POLL = 0.02
+_LOG_BATCH = 500
 
 
 class RasonMasNode(object):
@@ -105,7 +108,10 @@ class RasonMasNode(object):
         self._presence_topic = presence_topic
         self._messages = MessageOutbox(publish=self._message_pub.publish, linked=self._linked,
                                        connect_wait=connect_wait)
+        self._log_lines = jpype.JClass('rason.RosLogHandler')
+        self._log_stop = threading.Event()
         self._hub.setConnector(_make_connector(self))
+        threading.Thread(target=self._log_loop, name='rason_log', daemon=True).start()
 
     # ---- life cycle -----------------------------------------------------------------
 
@@ -160,7 +166,10 @@ class RasonMasNode(object):
             ended = self._mas.stopAgents(int(join_timeout * 1000))
             if not ended:
                 rospy.logwarn('some agents did not stop within %.1f s', join_timeout)
-        self._hub.setConnector(None)
+        self._log_stop.set()
+        self._hub.setConnector(None)  # from now on Java logs to stderr
+        while self._drain_log():
+            pass
 
     # ---- ROS -> agents -------------------------------------------------------------
 
@@ -317,8 +326,25 @@ class RasonMasNode(object):
                           self._connect_wait)
         return held
 
+    def _log_loop(self):
+        # The agents' .print and Jason's log, queued on the Java side: written here,
+        # off the agents' threads, so printing never makes an agent wait for Python.
+        while not self._log_stop.is_set():
+            if not self._drain_log():
+                self._log_stop.wait(_LOG_POLL)
+
+    def _drain_log(self):
+        """Writes the lines queued by Java's RosLogHandler; returns how many there were."""
+        lines = self._log_lines.drain(_LOG_BATCH)
+        for line in lines:
+            self.log(int(line.level()), str(line.agent()), str(line.message()))
+        dropped = int(self._log_lines.takeDropped())
+        if dropped:
+            rospy.logwarn('%d log lines of the agents were dropped: they came faster than rosout took them', dropped)
+        return len(lines)
+
     def log(self, level, agent, message):
-        """Called by Java's RosLogHandler: one log line to rosout."""
+        """One log line of Java's RosLogHandler to rosout."""
         text = '[%s] %s' % (agent, message) if agent else message
         if level >= _JAVA_SEVERE:
             rospy.logerr(text)
@@ -339,10 +365,6 @@ def _make_connector(node):
         def publishAction(self, agent, action_id, action, parameters):
             return node.publish_action(str(agent), int(action_id), str(action),
                                        [str(p) for p in parameters])
-
-        @JOverride
-        def log(self, level, agent, message):
-            node.log(int(level), str(agent), str(message))
 
         @JOverride
         def publishMessage(self, receiver_mas, sender, receiver, performative, content, msg_id, in_reply_to):

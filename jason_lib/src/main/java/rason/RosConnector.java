@@ -17,9 +17,6 @@ public interface RosConnector {
      */
     long publishAction(String agent, int actionId, String action, String[] parameters);
 
-    /** Writes one line to rosout; level is a java.util.logging level value. */
-    void log(int level, String agent, String message);
-
     /** An agent ran .stopMAS: the node should shut down and exit with exitValue. */
     void stopRequested(int exitValue);
 

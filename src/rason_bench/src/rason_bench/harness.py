@@ -1,0 +1,129 @@
+"""The controlling node of a benchmark run: starts measurements with control percepts,
+acts as the decomposer of the benchmark agent's actions (``OK`` at once) and collects
+the reports in them (:mod:`rason_bench.protocol`)."""
+import itertools
+import threading
+import time
+
+import rospy
+from rason_msgs.msg import Action, Event, Perception
+
+from rason_bench import protocol
+
+
+class Timeout(RuntimeError):
+    """The agent did not report in time."""
+
+
+class Harness(object):
+
+    def __init__(self):
+        self._cond = threading.Condition()
+        self._reports = []
+        self._heard = {}  # perception source -> messages heard
+        self._runs = itertools.count(1)
+        self._events = rospy.Publisher('jason/event', Event, queue_size=1000, tcp_nodelay=True)
+        self._perceptions = rospy.Publisher('jason/perception', Perception, queue_size=1000, tcp_nodelay=True)
+        rospy.Subscriber('jason/action', Action, self._on_action, queue_size=None, tcp_nodelay=True)
+        rospy.Subscriber('jason/perception', Perception, self._on_perception, queue_size=1000, tcp_nodelay=True)
+
+    def next_run(self):
+        return next(self._runs)
+
+    # ---- the decomposer of the agent's actions ----
+
+    def _on_action(self, msg):
+        try:
+            report = protocol.parse_report(msg.action, msg.parameters)
+        except protocol.BadReport as e:
+            rospy.logerr('bad report from %s: %s', msg.agent, e)
+            report = None
+        if report is None and msg.action != 'ping':
+            return
+        self._events.publish(Event(agent=msg.agent, event_type='action_feedback',
+                                   parameters=['OK', str(msg.action_id)]))
+        if report is not None:
+            with self._cond:
+                self._reports.append(report)
+                self._cond.notify_all()
+
+    def _on_perception(self, msg):
+        with self._cond:
+            self._heard[msg.source] = self._heard.get(msg.source, 0) + 1
+            self._cond.notify_all()
+
+    # ---- waiting ----
+
+    def _wait(self, ready, timeout, what):
+        deadline = time.monotonic() + timeout
+        with self._cond:
+            while not ready():
+                left = deadline - time.monotonic()
+                if left <= 0 or rospy.is_shutdown():
+                    raise Timeout('no %s within %.0f s' % (what, timeout))
+                self._cond.wait(min(left, 0.1))
+
+    def reports(self, kind, run, count, timeout, done=None):
+        """Wait for ``count`` reports of type ``kind`` for ``run`` (or, if given, one for which
+        ``done(report)`` holds); returns them in arrival order."""
+        def mine():
+            return [r for r in self._reports if isinstance(r, kind) and r.run == run]
+
+        def ready():
+            found = mine()
+            return len(found) >= count or (done is not None and any(done(r) for r in found))
+        self._wait(ready, timeout, '%d %s reports for run %d' % (count, kind.__name__, run))
+        with self._cond:
+            found = mine()
+            self._reports = [r for r in self._reports if not (isinstance(r, kind) and r.run == run)]
+        return found
+
+    def wait_heard(self, source, count=1, timeout=20.0):
+        """Wait until ``count`` more messages of ``source`` have been heard."""
+        with self._cond:
+            target = self._heard.get(source, 0) + count
+        self._wait(lambda: self._heard.get(source, 0) >= target, timeout, 'messages from %s' % source)
+
+    def handshake(self, agent, timeout=60.0):
+        """Wait until ``agent`` answers a one-ping run: our percepts reach it, its actions reach
+        us and our feedback reaches it (connection counts can still include a node just stopped)."""
+        deadline = time.monotonic() + timeout
+        while True:
+            run = self.next_run()
+            self.control(protocol.go_ping(agent, run, 1))
+            try:
+                self.reports(protocol.RoundTrip, run, 1, 0.5)
+                return
+            except Timeout:
+                if time.monotonic() > deadline:
+                    raise Timeout('%s did not answer within %.0f s' % (agent, timeout))
+
+    # ---- commands ----
+
+    def control(self, literal):
+        self._perceptions.publish(Perception(source=protocol.CONTROL_SOURCE, perception=[literal]))
+
+    def cycle(self, agent, iterations, timeout):
+        """One run of the Listing 5.4 loop by ``agent``: a :class:`protocol.Cycle`."""
+        run = self.next_run()
+        self.control(protocol.go_cycle(agent, run, iterations))
+        return self.reports(protocol.Cycle, run, 1, timeout)[0]
+
+    def pings(self, agent, count, timeout):
+        """``count`` action round trips by ``agent``: ms each."""
+        run = self.next_run()
+        self.control(protocol.go_ping(agent, run, count))
+        return [r.ms for r in self.reports(protocol.RoundTrip, run, count, timeout)]
+
+    def stamps(self, count, period, timeout):
+        """Publish ``count`` stamp percepts, one every ``period`` s; ms from publish to the agent's
+        plan, for each stamp the agent saw (with per-source replacement, a stamp overtaken by the
+        next one before the agent perceived is never seen, by design)."""
+        run = self.next_run()
+        for seq in range(count):
+            now_ms = time.monotonic() * 1000.0
+            self._perceptions.publish(Perception(source=protocol.STAMP_SOURCE,
+                                                 perception=[protocol.stamp(run, seq, now_ms)]))
+            time.sleep(period)
+        last = count - 1
+        return [r.ms for r in self.reports(protocol.Seen, run, count, timeout, done=lambda r: r.seq == last)]

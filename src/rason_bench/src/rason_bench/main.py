@@ -1,0 +1,103 @@
+"""``make bench`` / ``rosrun rason_bench run_bench``: runs the benchmarks on a master of
+their own and writes ``report.md``, ``results.json`` and PNG plots.
+
+Options: ``--seconds`` (length of one measured run, default 5), ``--quick`` (a subset of
+cells, for a smoke run), ``--only`` (cycle, latency, scale), ``--out`` (directory).
+"""
+import argparse
+import datetime
+import json
+import os
+import platform
+import subprocess
+import sys
+import time
+
+from rason_bench import plots, report, thesis
+
+
+def _parse(argv):
+    ap = argparse.ArgumentParser(prog='run_bench', description=__doc__.split('\n\n')[0])
+    ap.add_argument('--seconds', type=float, default=5.0, help='length of one measured run (s)')
+    ap.add_argument('--quick', action='store_true', help='perceptions {1, 10} x {1, 50} Hz, fewer samples')
+    ap.add_argument('--only', action='append', choices=('cycle', 'latency', 'scale'),
+                    help='run only these parts (repeatable)')
+    ap.add_argument('--out', default='results/bench', help='output directory')
+    return ap.parse_args(argv)
+
+
+def machine_facts():
+    """CPU count and model, load average, whether the simulator runs, versions."""
+    model = ''
+    try:
+        with open('/proc/cpuinfo') as f:
+            model = next((l.split(':', 1)[1].strip() for l in f if l.startswith('model name')), '')
+    except OSError:
+        pass
+    sim = subprocess.run(['pgrep', '-f', 'rason_sim_node'], stdout=subprocess.DEVNULL).returncode == 0
+    java = subprocess.run(['java', '-version'], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          universal_newlines=True).stdout.splitlines()
+    return {'cpus': os.cpu_count(), 'cpu_model': model, 'load_at_start': list(os.getloadavg()),
+            'simulator_running': sim, 'python': platform.python_version(), 'java': java[0] if java else '',
+            'date': datetime.datetime.now().strftime('%Y-%m-%d %H:%M')}
+
+
+def main(argv=None):
+    args = _parse(sys.argv[1:] if argv is None else argv)
+    parts = args.only or ['cycle', 'latency', 'scale']
+    out_dir = os.path.abspath(args.out)
+    os.makedirs(out_dir, exist_ok=True)
+    perceptions = (1, 10) if args.quick else thesis.PERCEPTIONS
+    rates = (1, 50) if args.quick else thesis.RATES_HZ
+    pings, stamps = (100, 50) if args.quick else (1000, 300)
+    results = {'machine': machine_facts(),
+               'params': {'seconds': args.seconds, 'perceptions': list(perceptions), 'rates_hz': list(rates),
+                          'pings': pings, 'stamps': stamps, 'stamp_period_s': 0.02, 'quick': args.quick}}
+
+    def log(line):
+        print(line, flush=True)
+
+    log('load average at start: %s%s' % (results['machine']['load_at_start'],
+                                         ' (the simulator is running)' if results['machine']['simulator_running'] else ''))
+    from rason_bench.procs import Processes
+    procs = Processes(os.path.join(out_dir, 'logs'))
+    os.environ['ROS_MASTER_URI'] = procs.master_uri
+    procs.start_master()
+    started = time.monotonic()
+    try:
+        import rospy
+        from rason_bench import experiments
+        from rason_bench.harness import Harness
+        rospy.init_node('rason_bench', disable_signals=True)
+        harness = Harness()
+        if 'cycle' in parts:
+            results['cycle'] = experiments.cycle_tables(procs, harness, ('accumulate', 'per_source'),
+                                                        perceptions, rates, args.seconds, log)
+        if 'latency' in parts:
+            log('latencies')
+            results['latency'] = experiments.latencies(procs, harness, pings, stamps, 0.02, log)
+        if 'scale' in parts:
+            log('scale')
+            iterations = results['cycle']['per_source']['iterations'] if 'cycle' in results else 20000
+            results['scale'] = experiments.scale(procs, harness, (1, 10, 100), args.seconds, iterations, log)
+    finally:
+        procs.stop_master()
+    results['duration_s'] = round(time.monotonic() - started, 1)
+    write(results, out_dir)
+    for goal, measured, met in report.goals(results):
+        log('%-70s %-40s %s' % (goal, measured, 'met' if met else 'NOT MET'))
+    log('wrote %s/report.md (%.0f s)' % (out_dir, results['duration_s']))
+    return 0
+
+
+def write(results, out_dir):
+    with open(os.path.join(out_dir, 'results.json'), 'w') as f:
+        json.dump(results, f, indent=1, sort_keys=True)
+    if 'cycle' in results:
+        plots.cycle_plot(results['cycle'], os.path.join(out_dir, 'cycle_time.png'))
+    if 'latency' in results:
+        plots.latency_plot(results['latency'], os.path.join(out_dir, 'latency.png'))
+    if 'scale' in results:
+        plots.scale_plot(results['scale'], os.path.join(out_dir, 'scale.png'))
+    with open(os.path.join(out_dir, 'report.md'), 'w') as f:
+        f.write(report.markdown(results))
