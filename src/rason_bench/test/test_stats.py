@@ -35,3 +35,11 @@ def test_ratio_needs_a_positive_baseline():
     assert stats.ratio(3.0, 2.0) == 1.5
     assert stats.ratio(3.0, 0.0) is None
     assert stats.ratio(None, 2.0) is None
+
+
+def test_a_cell_is_its_median_run_not_an_average():
+    from rason_bench.experiments import median_run
+    runs = [{'ms': 0.009, 'cpu_percent': 150}, {'ms': 0.005, 'cpu_percent': 140},
+            {'ms': 0.006, 'cpu_percent': 145}]
+    assert median_run(runs) == {'ms': 0.006, 'cpu_percent': 145}
+    assert median_run(runs[:1]) == runs[0]

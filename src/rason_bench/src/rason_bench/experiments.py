@@ -111,9 +111,11 @@ def calibrate(mas, agent, seconds, log, min_seconds=10.0, max_seconds=60.0):
     return iterations
 
 
-def cycle_tables(procs, harness, modes, perceptions, rates, seconds, log):
-    """Per mode, one cell per perceptions x rate, each right after a baseline run (no traffic,
-    same agent, same JVM) that it is compared with, so that drifts of a shared machine cancel."""
+def cycle_tables(procs, harness, modes, perceptions, rates, seconds, log, repeats=3):
+    """Per mode, one cell per perceptions x rate. A cell is ``repeats`` runs under the burst
+    (their median) bracketed by a baseline run before and after it (no traffic, same agent,
+    same JVM; their mean), so that drifts of a shared machine cancel and one slow run (GC,
+    another process) does not decide the cell."""
     out = {}
     for mode in modes:
         log('cycle time, perception_manager=%s' % mode)
@@ -123,16 +125,26 @@ def cycle_tables(procs, harness, modes, perceptions, rates, seconds, log):
             cells = []
             for p in perceptions:
                 for r in rates:
-                    base = measured_cycle(mas, agent, iterations)
+                    before = measured_cycle(mas, agent, iterations)
                     with Burst(procs, harness, p, r):
-                        cell = measured_cycle(mas, agent, iterations)
-                    cell.update(perceptions=p, rate_hz=r, baseline_ms=base['ms'],
-                                baseline_cpu_percent=base['cpu_percent'])
+                        runs = [measured_cycle(mas, agent, iterations) for _ in range(repeats)]
+                    after = measured_cycle(mas, agent, iterations)
+                    cell = median_run(runs)
+                    cell.update(perceptions=p, rate_hz=r, runs_ms=[x['ms'] for x in runs],
+                                baseline_ms=(before['ms'] + after['ms']) / 2.0,
+                                baseline_cpu_percent=(before['cpu_percent'] + after['cpu_percent']) / 2.0)
                     cells.append(cell)
                     log('  %2d perceptions x %2g Hz: %.4f ms (baseline %.4f ms, %.2fx), node CPU %.0f%%'
-                        % (p, r, cell['ms'], base['ms'], cell['ms'] / base['ms'], cell['cpu_percent']))
-        out[mode] = {'iterations': iterations, 'cells': cells}
+                        % (p, r, cell['ms'], cell['baseline_ms'], cell['ms'] / cell['baseline_ms'],
+                           cell['cpu_percent']))
+        out[mode] = {'iterations': iterations, 'repeats': repeats, 'cells': cells}
     return out
+
+
+def median_run(runs):
+    """The run with the median time (an odd count gives a run that happened)."""
+    ordered = sorted(runs, key=lambda x: x['ms'])
+    return dict(ordered[len(ordered) // 2])
 
 
 def latencies(procs, harness, pings, stamps, stamp_period, log):

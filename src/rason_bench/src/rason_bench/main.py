@@ -1,7 +1,7 @@
 """``make bench`` / ``rosrun rason_bench run_bench``: runs the benchmarks on a master of
 their own and writes ``report.md``, ``results.json`` and PNG plots.
 
-Options: ``--seconds`` (length of one measured run, default 5), ``--quick`` (a subset of
+Options: ``--seconds`` (length of one measured run, default 1), ``--quick`` (a subset of
 cells, for a smoke run), ``--only`` (cycle, latency, scale), ``--out`` (directory).
 """
 import argparse
@@ -18,7 +18,7 @@ from rason_bench import plots, report, thesis
 
 def _parse(argv):
     ap = argparse.ArgumentParser(prog='run_bench', description=__doc__.split('\n\n')[0])
-    ap.add_argument('--seconds', type=float, default=5.0, help='length of one measured run (s)')
+    ap.add_argument('--seconds', type=float, default=1.0, help='length of one measured run (s)')
     ap.add_argument('--quick', action='store_true', help='perceptions {1, 10} x {1, 50} Hz, fewer samples')
     ap.add_argument('--only', action='append', choices=('cycle', 'latency', 'scale'),
                     help='run only these parts (repeatable)')

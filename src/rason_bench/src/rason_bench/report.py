@@ -84,8 +84,8 @@ def cycle_table(mode, mode_result):
         lines.append(_row(['%d' % p] + ['%.2f×' % cpu_slowdown(c) if c else ''
                                         for c in (cell(mode_result, p, r) for r in rates)]))
     base = [c['baseline_ms'] for c in mode_result['cells']]
-    return '\n'.join(lines) + ('\n\nBaseline runs (no ROS traffic, same agent and JVM, one right before each '
-                               'cell): median %.4f ms, min %.4f, max %.4f; %d iterations per run.\n'
+    return '\n'.join(lines) + ('\n\nBaseline (no ROS traffic, same agent and JVM; per cell the mean of a run '
+                               'right before and one right after it): median %.4f ms, min %.4f, max %.4f; %d iterations per run.\n'
                                % (stats.median(base), min(base), max(base), mode_result['iterations']))
 
 
@@ -126,9 +126,9 @@ def markdown(results):
     m = results['machine']
     out = ['# Rason benchmarks', '',
            'Written by `make bench` on %s. Machine: %d cores (%s), load average at start %s%s. '
-           'Each cell: one run of about %g s. Times are per iteration of thesis Listing 5.4 '
+           'Each cell: the median of 3 runs of about %g s under the burst. Times are per iteration of thesis Listing 5.4 '
            '(the thesis\'s "reasoning cycle time"); in brackets the ratio to the baseline (no ROS '
-           'traffic, same agent, same JVM, same run) and the thesis\'s value (1.8 GHz dual-core AMD64).'
+           'traffic, same agent, same JVM, runs right before and after the cell) and the thesis\'s value (1.8 GHz dual-core AMD64).'
            % (m['date'], m['cpus'], m['cpu_model'], ' / '.join('%.2f' % x for x in m['load_at_start']),
               '; the simulator campaign was running' if m.get('simulator_running') else '',
               results['params']['seconds']), '',
