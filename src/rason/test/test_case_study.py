@@ -17,11 +17,11 @@ from xmlrpc.client import ServerProxy
 import rosgraph
 import rospy
 import rostest
+from diagnosis_reporter.report import STATUS_NAME
 from diagnostic_msgs.msg import DiagnosticArray
 from rason_msgs.msg import AgentMessage
 from rason_msgs.srv import FaultInjector
 
-DIAGNOSIS_STATUS = 'rason/diagnosis'
 FAULTY_MAS = '/faulty/rason_mas'
 
 
@@ -45,7 +45,7 @@ class CaseStudyRun(object):
 
     def _on_diagnostics(self, msg):
         for status in msg.status:
-            if status.name == DIAGNOSIS_STATUS and self.diagnosis is None:
+            if status.name == STATUS_NAME and self.diagnosis is None:
                 self.diagnosis = dict((kv.key, kv.value) for kv in status.values)
 
     def said(self, sender, receiver, content_prefix):

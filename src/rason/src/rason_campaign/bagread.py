@@ -1,11 +1,12 @@
 """Read a run's bag into the events ``steps.extract_steps`` takes (needs rosbag, no master)."""
 import os
 
+from diagnosis_reporter.report import STATUS_NAME
+
 ACTION_TOPIC = '/%s/jason/action'
 MESSAGES_TOPIC = '/rason/messages'
 DIAGNOSTICS_TOPIC = '/diagnostics'
 CLOCK_TOPIC = '/clock'
-DIAGNOSIS_STATUS = 'rason/diagnosis'   # diagnosis_reporter.report.STATUS_NAME
 ROBOTS = ('faulty', 'helper')
 
 
@@ -42,7 +43,7 @@ def read_events(path):
                                                'content': msg.content}))
                 else:
                     for status in msg.status:
-                        if status.name == DIAGNOSIS_STATUS:
+                        if status.name == STATUS_NAME:
                             fields = {kv.key: kv.value for kv in status.values}
                             raw.append((t, 'diagnosis', fields))
     except (rosbag.ROSBagException, OSError) as e:
