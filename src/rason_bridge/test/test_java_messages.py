@@ -6,7 +6,7 @@ import pytest
 from rason_bridge.jvm import start_jvm
 
 start_jvm()
-Messages = jpype.JClass('rason.Messages')
+Messages = jpype.JClass('rason.messaging.Messages')
 Message = jpype.JClass('jason.asSemantics.Message')
 ASSyntax = jpype.JClass('jason.asSyntax.ASSyntax')
 

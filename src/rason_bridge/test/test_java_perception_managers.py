@@ -6,12 +6,12 @@ import pytest
 from rason_bridge.jvm import start_jvm
 
 start_jvm()
-Perceptions = jpype.JClass('rason.Perceptions')
-PerSourcePerception = jpype.JClass('rason.PerSourcePerception')
-AccumulatePerception = jpype.JClass('rason.AccumulatePerception')
-RateLimitedPerception = jpype.JClass('rason.RateLimitedPerception')
-SelectivePerception = jpype.JClass('rason.SelectivePerception')
-PerceptionManagers = jpype.JClass('rason.PerceptionManagers')
+Perceptions = jpype.JClass('rason.perception.Perceptions')
+PerSourcePerception = jpype.JClass('rason.perception.PerSourcePerception')
+AccumulatePerception = jpype.JClass('rason.perception.AccumulatePerception')
+RateLimitedPerception = jpype.JClass('rason.perception.RateLimitedPerception')
+SelectivePerception = jpype.JClass('rason.perception.SelectivePerception')
+PerceptionManagers = jpype.JClass('rason.perception.PerceptionManagers')
 ArrayList = jpype.JClass('java.util.ArrayList')
 HashSet = jpype.JClass('java.util.HashSet')
 
@@ -178,7 +178,7 @@ def test_selection_parsing_refuses_what_is_not_functor_arity(spec):
     ('accumulate', None, None, 'accumulate'),
     ('per_source', '5', None, 'rate_limit(5.0/s) over per_source'),
     (None, None, 'robot/4', 'selective[robot/4] over per_source'),
-    ('rason.AccumulatePerception', '2.5', 'a/1', 'selective[a/1] over rate_limit(2.5/s) over accumulate'),
+    ('rason.perception.AccumulatePerception', '2.5', 'a/1', 'selective[a/1] over rate_limit(2.5/s) over accumulate'),
 ])
 def test_chain_from_options(manager, rate, perceive, expected):
     assert str(PerceptionManagers.forAgent(manager, rate, perceive, 'per_source')) == expected
@@ -190,8 +190,8 @@ def test_default_strategy_applies_when_the_agent_names_none():
 
 @pytest.mark.parametrize('manager, rate, perceive, why', [
     ('fancy', None, None, 'perception_manager: perception manager \'fancy\' is neither'),
-    ('java.lang.String', None, None, 'does not implement rason.PerceptionManager'),
-    ('rason.RateLimitedPerception', None, None, 'public constructor without arguments'),
+    ('java.lang.String', None, None, 'does not implement rason.perception.PerceptionManager'),
+    ('rason.perception.RateLimitedPerception', None, None, 'public constructor without arguments'),
     (None, 'fast', None, 'perception_rate: \'fast\' is not a number'),
     (None, '0', None, 'perception_rate: a perception rate must be a positive'),
     (None, None, 'robot', 'perceive: \'robot\' is not functor/arity'),

@@ -6,8 +6,8 @@ import pytest
 from rason_bridge.jvm import start_jvm
 
 start_jvm()
-Perceptions = jpype.JClass('rason.Perceptions')
-PerSourcePerception = jpype.JClass('rason.PerSourcePerception')
+Perceptions = jpype.JClass('rason.perception.Perceptions')
+PerSourcePerception = jpype.JClass('rason.perception.PerSourcePerception')
 RosAgArch = jpype.JClass('rason.RosAgArch')
 ASSyntax = jpype.JClass('jason.asSyntax.ASSyntax')
 ArrayList = jpype.JClass('java.util.ArrayList')

@@ -5,7 +5,7 @@ import jpype
 from rason_bridge.jvm import start_jvm
 
 start_jvm()
-PresenceTable = jpype.JClass('rason.PresenceTable')
+PresenceTable = jpype.JClass('rason.messaging.PresenceTable')
 
 S = 1000000000
 TIMEOUT = 2 * S

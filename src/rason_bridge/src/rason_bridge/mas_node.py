@@ -108,7 +108,7 @@ class RasonMasNode(object):
         self._presence_topic = presence_topic
         self._messages = MessageOutbox(publish=self._message_pub.publish, linked=self._linked,
                                        connect_wait=connect_wait)
-        self._log_lines = jpype.JClass('rason.RosLogHandler')
+        self._log_lines = jpype.JClass('rason.infra.RosLogHandler')
         self._log_stop = threading.Event()
         self._hub.setConnector(_make_connector(self))
         threading.Thread(target=self._log_loop, name='rason_log', daemon=True).start()
@@ -120,7 +120,7 @@ class RasonMasNode(object):
 
         :raises RuntimeError: the project or all of its agents could not be loaded
         """
-        mas_class = self._jpype.JClass('rason.RasonLocalMAS')
+        mas_class = self._jpype.JClass('rason.infra.RasonLocalMAS')
         self._mas = mas_class()
         try:
             self._mas.setAgentPrefix(self._agent_prefix)

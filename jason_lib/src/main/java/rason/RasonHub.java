@@ -1,5 +1,11 @@
 package rason;
 
+import rason.infra.RasonLocalMAS;
+import rason.messaging.Messages;
+import rason.messaging.PresenceTable;
+import rason.perception.PerceptionManagers;
+import rason.perception.Perceptions;
+
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collection;
@@ -42,7 +48,7 @@ public final class RasonHub {
 
     // ---- between processes (thesis §5.6) ----
     /** Jason atoms: what an agent name must look like to become source(Name). */
-    static final String NAME_PATTERN = "[a-z][A-Za-z0-9_]*";
+    public static final String NAME_PATTERN = "[a-z][A-Za-z0-9_]*";
     private volatile String masId = "";
     private volatile String agentPrefix = "";
     private final PresenceTable presence = new PresenceTable(); // guarded by itself
@@ -94,7 +100,7 @@ public final class RasonHub {
     }
 
     /** Set by {@link RasonLocalMAS#setAgentPrefix} before the agents are created. */
-    void setAgentPrefix(String prefix) {
+    public void setAgentPrefix(String prefix) {
         agentPrefix = prefix == null ? "" : prefix;
     }
 
@@ -136,7 +142,7 @@ public final class RasonHub {
         defaultPerceptionManager = spec;
     }
 
-    String defaultPerceptionManager() {
+    public String defaultPerceptionManager() {
         return defaultPerceptionManager;
     }
 
@@ -447,7 +453,7 @@ public final class RasonHub {
     }
 
     /** Names of the hosted agents, live (the log handler tags lines with them). */
-    Collection<String> hostedNames() {
+    public Collection<String> hostedNames() {
         return agents.keySet();
     }
 }

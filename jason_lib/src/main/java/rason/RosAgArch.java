@@ -1,5 +1,13 @@
 package rason;
 
+import rason.infra.RasonLocalMAS;
+import rason.messaging.Messages;
+import rason.perception.PerSourcePerception;
+import rason.perception.PerceptionManager;
+import rason.perception.PerceptionManagers;
+import rason.perception.Perceptions;
+import rason.perception.SelectivePerception;
+
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.HashSet;

@@ -1,5 +1,7 @@
 package rason;
 
+import rason.perception.SelectivePerception;
+
 import java.util.ArrayList;
 import java.util.List;
 

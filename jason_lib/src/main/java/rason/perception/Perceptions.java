@@ -1,4 +1,4 @@
-package rason;
+package rason.perception;
 
 import jason.asSyntax.ASSyntax;
 import jason.asSyntax.Literal;

@@ -1,4 +1,6 @@
-package rason;
+package rason.messaging;
+
+import rason.RasonHub;
 
 import java.util.ArrayList;
 import java.util.Collection;

@@ -1,4 +1,9 @@
-package rason;
+package rason.infra;
+
+import rason.RasonHub;
+import rason.RosAgArch;
+import rason.RosConnector;
+import rason.perception.PerceptionManagers;
 
 import java.io.File;
 import java.io.FileInputStream;

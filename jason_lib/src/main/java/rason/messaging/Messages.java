@@ -1,4 +1,4 @@
-package rason;
+package rason.messaging;
 
 import jason.asSemantics.Message;
 import jason.asSyntax.ASSyntax;

@@ -1,4 +1,4 @@
-package rason;
+package rason.perception;
 
 import java.util.Set;
 

@@ -1,4 +1,6 @@
-package rason;
+package rason.infra;
+
+import rason.RasonHub;
 
 import java.util.Collection;
 
