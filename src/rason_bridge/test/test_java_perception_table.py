@@ -1,5 +1,5 @@
 """The Java side of the bridge (jason_lib), driven through JPype without a ROS master:
-parsing perceptions, per-source replacement, expiry, action parameters and failure reasons."""
+parsing perceptions, per-source replacement, expiry."""
 import jpype
 import pytest
 
@@ -8,7 +8,6 @@ from rason_bridge.jvm import start_jvm
 start_jvm()
 Perceptions = jpype.JClass('rason.perception.Perceptions')
 PerSourcePerception = jpype.JClass('rason.perception.PerSourcePerception')
-RosAgArch = jpype.JClass('rason.RosAgArch')
 ASSyntax = jpype.JClass('jason.asSyntax.ASSyntax')
 ArrayList = jpype.JClass('java.util.ArrayList')
 
@@ -106,27 +105,3 @@ def test_ttl_zero_never_expires():
     table.update('s', lits('p(1)'), 0)
     assert not table.expire(1000 * SECOND, 0)
     assert texts(table.current()) == ['p(1)']
-
-
-@pytest.mark.parametrize('action, params', [
-    ('move(1)', ['1']),
-    ('move(-0.3)', ['-0.3']),
-    ('turn(5)', ['5']),
-    ('say("hello there", bob)', ['hello there', 'bob']),
-    ('go(pos(1,2),[a,b])', ['pos(1,2)', '[a,b]']),
-    ('stop', []),
-])
-def test_action_parameters_are_sent_as_text(action, params):
-    term = ASSyntax.parseStructure(action)
-    assert [str(p) for p in RosAgArch.parametersOf(term)] == params
-
-
-@pytest.mark.parametrize('result, literal', [
-    ('no_progress', 'no_progress'),
-    ('bad_move', 'bad_move'),
-    ('blocked(left)', 'blocked(left)'),
-    ('Motor stalled!', 'failure_reason("Motor stalled!")'),
-    ('X', 'failure_reason("X")'),
-])
-def test_failure_reasons_become_annotations(result, literal):
-    assert str(RosAgArch.reasonLiteral(result)) == literal

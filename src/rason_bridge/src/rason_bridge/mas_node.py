@@ -1,9 +1,11 @@
 """The rason_mas node: runs a Jason project's agents on ROS topics (thesis §5.2),
 and lets them talk to the agents of other rason_mas processes (thesis §5.6).
 
-rospy plumbing only: the tables, queues, presence and action bookkeeping live on
-the Java side (jason_lib: RasonHub, RosAgArch, PresenceTable); the decisions that
-are Python's are in :mod:`rason_bridge.events`, :mod:`rason_bridge.outbox` and
+rospy plumbing only. The tables (actions, perceptions, presence, remote asks)
+live on the Java side (jason_lib, behind ``rason.bridge.Bridge``); this node
+pushes ROS input and the ROS time in, and one thread of it publishes what the
+agents queued in the Java ``Outbox``, so an agent's thread never calls Python.
+The decisions that are Python's are in :mod:`rason_bridge.outbox` and
 :mod:`rason_bridge.peers`.
 """
 import logging
@@ -16,9 +18,8 @@ import rosgraph
 import rospy
 from rason_msgs.msg import Action, AgentMessage, Event, Perception, Presence
 
-from rason_bridge import events
 from rason_bridge.jvm import JvmError, start_jvm
-from rason_bridge.outbox import DEFERRED, NO_DECOMPOSER, SENT, ActionOutbox
+from rason_bridge.outbox import DEFERRED, NO_DECOMPOSER, ActionOutbox
 from rason_bridge.peers import HELD, MessageOutbox
 
 _JAVA_SEVERE = 1000
@@ -30,11 +31,13 @@ def _ros_now_ns():
     return rospy.get_rostime().to_nsec()
 
 
-#: Presence: how often the hub checks links and silences (wall clock, seconds).
+#: Presence: how often the fleet checks links and silences (wall clock, seconds).
 _PRESENCE_TICK = 0.05
 #: How often the log thread looks for lines queued by the agents (seconds), and how many it takes at once.
 _LOG_POLL = 0.02
 _LOG_BATCH = 500
+#: How long the outbound thread blocks in Java waiting for the agents' next action or message (ms).
+_OUTBOUND_WAIT_MS = 200
 
 
 class RasonMasNode(object):
@@ -62,22 +65,21 @@ class RasonMasNode(object):
                  ask_timeout=60.0, agent_prefix='', perception_manager='per_source'):
         import jpype  # the JVM is started by main() before this point
         self._jpype = jpype
-        self._hub = jpype.JClass('rason.RasonHub').get()
-        self._hub.setActionTimeoutNanos(int(action_timeout * 1e9))
-        self._hub.setPerceptionTtlNanos(int(perception_ttl * 1e9))
+        self._bridge = jpype.JClass('rason.bridge.Bridge').get()
+        self._bridge.setActionTimeoutNanos(int(action_timeout * 1e9))
+        self._bridge.setPerceptionTtlNanos(int(perception_ttl * 1e9))
         if presence_period <= 0 or presence_timeout <= presence_period:
             raise ValueError('presence_timeout (%s s) must be longer than presence_period (%s s) > 0'
                              % (presence_timeout, presence_period))
-        self._hub.setPresenceTimeoutNanos(int(presence_timeout * 1e9))
-        self._hub.setAskTimeoutNanos(int(ask_timeout * 1e9))
-        self._hub.setPresenceBeliefs(bool(presence_beliefs))
+        self._bridge.setPresenceTimeoutNanos(int(presence_timeout * 1e9))
+        self._bridge.setAskTimeoutNanos(int(ask_timeout * 1e9))
+        self._bridge.setPresenceBeliefs(bool(presence_beliefs))
         try:
-            self._hub.setDefaultPerceptionManager(perception_manager)
+            self._bridge.setDefaultPerceptionManager(perception_manager)
         except jpype.JException as e:
             raise ValueError('perception_manager: %s' % e.getMessage())
         self._agent_prefix = agent_prefix
         self._mas = None
-        self._warned_agents = set()
         self._stopping = False
         #: exit status of the process (set by .stopMAS(Deadline, StopJVM, Code))
         self.exit_code = 0
@@ -89,7 +91,7 @@ class RasonMasNode(object):
             publish=self._action_pub.publish,
             connected=self._action_pub.get_num_connections,
             listed=self._listed_action_subscribers,
-            fail=lambda action, reason: self._hub.actionFeedback(action.agent, action.action_id, reason),
+            fail=lambda action, reason: self._bridge.actionFailed(action.agent, action.action_id, reason),
             connect_wait=connect_wait)
         self._outbox_wakeup = threading.Event()
         self._connect_wait = connect_wait
@@ -98,7 +100,7 @@ class RasonMasNode(object):
         # the start time tells a restarted process from the one before.
         self.mas_id = rospy.get_name()
         self._incarnation = time.time_ns()
-        self._hub.setMasId(self.mas_id)
+        self._bridge.setMasId(self.mas_id)
         self._presence_period = presence_period
         self._presence_stop = threading.Event()
         self._announce_lock = threading.Lock()
@@ -110,7 +112,13 @@ class RasonMasNode(object):
                                        connect_wait=connect_wait)
         self._log_lines = jpype.JClass('rason.infra.RosLogHandler')
         self._log_stop = threading.Event()
-        self._hub.setConnector(_make_connector(self))
+        self._outbound_stop = threading.Event()
+        self._outbound_thread = None
+        outbound = 'rason.bridge.Outbound$'
+        self._action_item = jpype.JClass(outbound + 'Action')
+        self._message_item = jpype.JClass(outbound + 'AgentMessage')
+        self._stop_item = jpype.JClass(outbound + 'Stop')
+        self._bridge.attach()  # the agents' outbox and log are ours from now on
         threading.Thread(target=self._log_loop, name='rason_log', daemon=True).start()
 
     # ---- life cycle -----------------------------------------------------------------
@@ -128,7 +136,7 @@ class RasonMasNode(object):
             self._mas.create()
         except self._jpype.JException as e:
             raise RuntimeError(str(e.getMessage()))
-        names = [str(n) for n in self._hub.agentNames()]
+        names = [str(n) for n in self._bridge.agentNames()]
         if not names:
             raise RuntimeError('no agent of %s could be created (see the errors above)' % mas2j_path)
         return names
@@ -147,8 +155,11 @@ class RasonMasNode(object):
         # Feedback from a decomposer that is not connected yet would be lost:
         # let the running ones connect before the agents act.
         self._wait_for_publishers(events_sub, self._connect_wait)
+        self._outbound_thread = threading.Thread(target=self._outbound_loop, name='rason_outbound', daemon=True)
+        self._outbound_thread.start()
         threading.Thread(target=self._outbox_loop, name='rason_outbox', daemon=True).start()
         threading.Thread(target=self._presence_loop, name='rason_presence', daemon=True).start()
+        self._bridge.tick(_ros_now_ns())  # the agents' clock is known before their first action
         rospy.Timer(rospy.Duration(0.05), self._on_tick)
         self._mas.start()
 
@@ -160,43 +171,37 @@ class RasonMasNode(object):
         # first, so the other processes stop counting on our agents at once
         self._presence_stop.set()
         self._announce(leaving=True)
-        self._hub.shutdown('shutdown')
+        self._bridge.shutdown('shutdown')
         time.sleep(grace)
         if self._mas is not None:
             ended = self._mas.stopAgents(int(join_timeout * 1000))
             if not ended:
                 rospy.logwarn('some agents did not stop within %.1f s', join_timeout)
+        # what the agents queued before they stopped still goes out
+        self._outbound_stop.set()
+        if self._outbound_thread is not None:
+            self._outbound_thread.join(join_timeout)
         self._log_stop.set()
-        self._hub.setConnector(None)  # from now on Java logs to stderr
+        self._bridge.detach()  # from now on Java logs to stderr
         while self._drain_log():
             pass
 
     # ---- ROS -> agents -------------------------------------------------------------
 
     def _on_perception(self, msg):
-        self._hub.perceive(msg.source, msg.perception, _ros_now_ns())
+        self._bridge.perceive(msg.source, msg.perception, _ros_now_ns())
 
     def _on_event(self, msg):
-        if not self._hub.hosts(msg.agent):
-            if msg.agent not in self._warned_agents:
-                self._warned_agents.add(msg.agent)
-                rospy.loginfo('ignoring events for agent %r: not hosted here (logged once)', msg.agent)
-            return
-        try:
-            fb = events.parse_action_feedback(msg.agent, msg.event_type, msg.parameters)
-        except events.BadEvent as e:
-            rospy.logwarn('ignored event for %s: %s', msg.agent, e)
-            return
-        self._hub.actionFeedback(fb.agent, fb.action_id, fb.result)
+        self._bridge.event(msg.agent, msg.event_type, msg.parameters)  # parsed and checked in Java
 
     def _on_tick(self, _event):
-        self._hub.tick(_ros_now_ns())
+        self._bridge.tick(_ros_now_ns())
 
     def _on_message(self, msg):
         if msg.sender_mas == self.mas_id or (msg.receiver_mas and msg.receiver_mas != self.mas_id):
             return  # our own, or for another process: the common case, kept out of Java
         try:
-            self._hub.deliverMessage(msg.sender_mas, msg.sender, msg.receiver_mas, msg.receiver,
+            self._bridge.deliverMessage(msg.sender_mas, msg.sender, msg.receiver_mas, msg.receiver,
                                      msg.performative, msg.content, msg.msg_id, msg.in_reply_to)
         except Exception as e:  # a bug must not kill the subscriber thread
             rospy.logerr('could not deliver message from %s (%s): %s', msg.sender, msg.sender_mas, e)
@@ -209,7 +214,7 @@ class RasonMasNode(object):
                                    msg.mas_id, msg.incarnation)
             return
         try:
-            self._hub.presenceAnnounced(msg.mas_id, msg.incarnation, msg.agents, msg.leaving)
+            self._bridge.presenceAnnounced(msg.mas_id, msg.incarnation, msg.agents, msg.leaving)
         except Exception as e:
             rospy.logerr('could not handle presence of %r: %s', msg.mas_id, e)
 
@@ -225,7 +230,7 @@ class RasonMasNode(object):
                 self._announce(leaving=False)
                 next_announcement = now + self._presence_period
             try:
-                self._hub.presenceTick(self._linked_processes())
+                self._bridge.presenceTick(self._linked_processes())
             except Exception as e:
                 rospy.logerr_throttle(10, 'presence tick failed: %s', e)
             self._presence_stop.wait(_PRESENCE_TICK)
@@ -241,7 +246,7 @@ class RasonMasNode(object):
         try:
             self._presence_pub.publish(Presence(
                 mas_id=self.mas_id, incarnation=self._incarnation,
-                agents=[str(n) for n in self._hub.agentNames()],
+                agents=[str(n) for n in self._bridge.agentNames()],
                 period=self._presence_period, leaving=leaving))
         except Exception as e:  # topic closed at shutdown
             rospy.logdebug('presence not announced: %s', e)
@@ -257,30 +262,52 @@ class RasonMasNode(object):
 
     # ---- agents -> ROS -------------------------------------------------------------
 
-    def publish_action(self, agent, action_id, functor, parameters):
-        """Called on an agent's thread by RosAgArch.act; returns the ROS time or -1 (no decomposer)."""
+    def _outbound_loop(self):
+        # Publishes what the agents queued in Java: this thread blocks in Java
+        # (JPype lets the other Python threads run), never an agent's thread.
+        outbox = self._bridge.outbox()
+        while True:
+            item = outbox.take(_OUTBOUND_WAIT_MS)
+            if item is None:
+                if self._outbound_stop.is_set():
+                    return
+                continue
+            try:
+                self._dispatch(item)
+            except Exception as e:  # a bug must not end the thread that publishes every action
+                rospy.logerr('could not publish %s: %s', item, e)
+
+    def _dispatch(self, item):
+        if isinstance(item, self._action_item):
+            self._publish_action(str(item.agent()), int(item.actionId()), str(item.action()),
+                                 [str(p) for p in item.parameters()])
+        elif isinstance(item, self._message_item):
+            self._publish_message(AgentMessage(
+                sender_mas=self.mas_id, sender=str(item.sender()), receiver_mas=str(item.receiverMas()),
+                receiver=str(item.receiver()), performative=str(item.performative()),
+                content=str(item.content()), msg_id=str(item.msgId()), in_reply_to=str(item.inReplyTo())))
+        elif isinstance(item, self._stop_item):
+            self.exit_code = int(item.exitValue())
+            # not on this thread: shutting down joins it
+            threading.Thread(target=rospy.signal_shutdown, args=('an agent ran .stopMAS',)).start()
+
+    def _publish_action(self, agent, action_id, functor, parameters):
         msg = Action(agent=agent, action_id=action_id, action=functor, parameters=parameters)
         outcome = self._outbox.submit(msg)
         if outcome == NO_DECOMPOSER:
             rospy.logwarn('[%s] %s%s failed: no node subscribes to %s', agent, functor,
                           tuple(parameters), self._action_topic)
-            return -1
-        if outcome == DEFERRED:
+            self._bridge.actionFailed(agent, action_id, Event.NO_DECOMPOSER)
+        elif outcome == DEFERRED:
             self._outbox_wakeup.set()
-        return _ros_now_ns()
 
-    def publish_message(self, receiver_mas, sender, receiver, performative, content, msg_id, in_reply_to):
-        """Called on an agent's thread by RosAgArch: one agent message to another process; False if impossible."""
-        msg = AgentMessage(sender_mas=self.mas_id, sender=sender, receiver_mas=receiver_mas,
-                           receiver=receiver, performative=performative, content=content,
-                           msg_id=msg_id, in_reply_to=in_reply_to)
+    def _publish_message(self, msg):
         try:
-            if self._messages.submit(msg, receiver_mas) == HELD:
+            if self._messages.submit(msg, msg.receiver_mas) == HELD:
                 self._outbox_wakeup.set()
-        except Exception as e:
-            rospy.logwarn('[%s] could not send %s to %s: %s', sender, performative, receiver or 'everyone', e)
-            return False
-        return True
+        except Exception as e:  # topic closed at shutdown
+            rospy.logwarn('[%s] could not send %s to %s: %s', msg.sender, msg.performative,
+                          msg.receiver or 'everyone', e)
 
     def _registered(self, topic, publishers):
         """Nodes the master lists as publishers (or subscribers) of topic; None if unreachable."""
@@ -354,30 +381,6 @@ class RasonMasNode(object):
             rospy.loginfo(text)
         else:
             rospy.logdebug(text)
-
-
-def _make_connector(node):
-    from jpype import JImplements, JOverride
-
-    @JImplements('rason.RosConnector')
-    class Connector(object):
-        @JOverride
-        def publishAction(self, agent, action_id, action, parameters):
-            return node.publish_action(str(agent), int(action_id), str(action),
-                                       [str(p) for p in parameters])
-
-        @JOverride
-        def publishMessage(self, receiver_mas, sender, receiver, performative, content, msg_id, in_reply_to):
-            return node.publish_message(str(receiver_mas), str(sender), str(receiver), str(performative),
-                                        str(content), str(msg_id), str(in_reply_to))
-
-        @JOverride
-        def stopRequested(self, exit_value):
-            node.exit_code = int(exit_value)
-            # not on the agent's thread: shutting down joins the agent threads
-            threading.Thread(target=rospy.signal_shutdown, args=('an agent ran .stopMAS',)).start()
-
-    return Connector()
 
 
 def main(argv=None):

@@ -9,9 +9,12 @@ and failed with ``no_decomposer`` when the master lists no subscriber at all.
 import threading
 import time
 
+from rason_msgs.msg import Event
+
 SENT = 'sent'
 DEFERRED = 'deferred'
-NO_DECOMPOSER = 'no_decomposer'
+#: outcome of submit, and the failure reason the action ends with
+NO_DECOMPOSER = Event.NO_DECOMPOSER
 
 
 class ActionOutbox(object):

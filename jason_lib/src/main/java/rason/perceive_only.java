@@ -1,7 +1,5 @@
 package rason;
 
-import rason.perception.SelectivePerception;
-
 import java.util.ArrayList;
 import java.util.List;
 
@@ -11,6 +9,8 @@ import jason.asSemantics.TransitionSystem;
 import jason.asSemantics.Unifier;
 import jason.asSyntax.StringTerm;
 import jason.asSyntax.Term;
+
+import rason.perception.SelectivePerception;
 
 /**
  * {@code rason.perceive_only(["robot/4", "battery/1"])} (or one string

@@ -1,10 +1,5 @@
 package rason.infra;
 
-import rason.RasonHub;
-import rason.RosAgArch;
-import rason.RosConnector;
-import rason.perception.PerceptionManagers;
-
 import java.io.File;
 import java.io.FileInputStream;
 import java.io.InputStream;
@@ -22,6 +17,12 @@ import jason.infra.local.RunLocalMAS;
 import jason.mas2j.AgentParameters;
 import jason.runtime.RuntimeServicesFactory;
 import jason.util.Config;
+
+import rason.RosAgArch;
+import rason.bridge.Bridge;
+import rason.bridge.Outbound;
+import rason.messaging.Fleet;
+import rason.perception.PerceptionManagers;
 
 /**
  * Jason's local infrastructure, headless and embedded: loads a .mas2j without
@@ -51,11 +52,11 @@ public class RasonLocalMAS extends RunLocalMAS {
      */
     public void setAgentPrefix(String prefix) throws JasonException {
         String p = prefix == null ? "" : prefix.strip();
-        if (!p.isEmpty() && !p.matches(RasonHub.NAME_PATTERN))
+        if (!p.isEmpty() && !p.matches(Fleet.NAME_PATTERN))
             throw new JasonException("agent prefix '" + prefix + "' must start with a lower-case letter and hold only"
                     + " letters, digits and _ (agent names are Jason atoms), e.g. robot1_");
         agentPrefix = p;
-        RasonHub.get().setAgentPrefix(p);
+        Bridge.get().registry().setAgentPrefix(p);
     }
 
     /**
@@ -103,7 +104,7 @@ public class RasonLocalMAS extends RunLocalMAS {
                 PerceptionManagers.forAgent(unquote(ap.getOption(PerceptionManagers.MANAGER_OPTION)),
                         unquote(ap.getOption(PerceptionManagers.RATE_OPTION)),
                         unquote(ap.getOption(PerceptionManagers.PERCEIVE_OPTION)),
-                        RasonHub.get().defaultPerceptionManager());
+                        Bridge.get().defaultPerceptionManager());
             } catch (IllegalArgumentException e) {
                 throw new JasonException("agent '" + ap.name + "': " + e.getMessage());
             }
@@ -114,19 +115,6 @@ public class RasonLocalMAS extends RunLocalMAS {
 
     private static String unquote(String s) {
         return s != null && s.length() >= 2 && s.startsWith("\"") && s.endsWith("\"") ? s.substring(1, s.length() - 1) : s;
-    }
-
-    /** Agents of the project, as loaded, before they are created. */
-    public List<String> agentDeclarations() {
-        List<String> names = new ArrayList<>();
-        for (AgentParameters ap : project.getAgents())
-            names.add(ap.name + (ap.getNbInstances() > 1 ? " #" + ap.getNbInstances() : ""));
-        return names;
-    }
-
-    /** Number of agents actually created (agents whose source fails to parse are not). */
-    public int createdAgentCount() {
-        return createdAgents.size();
     }
 
     @Override
@@ -141,9 +129,8 @@ public class RasonLocalMAS extends RunLocalMAS {
     /** .stopMAS: ask the rospy node to shut down (which stops the agents) instead of System.exit. */
     @Override
     public void finish(int deadline, boolean stopJVM, int exitValue) {
-        RosConnector c = RasonHub.get().getConnector();
-        if (c != null)
-            c.stopRequested(exitValue);
+        if (!Bridge.get().outbox().offer(new Outbound.Stop(exitValue)))
+            Bridge.log(Level.WARNING, ".stopMAS ignored: no rason_mas node runs this MAS");
     }
 
     /**

@@ -1,11 +1,11 @@
 package rason.infra;
 
-import rason.RasonHub;
-
 import java.util.Collection;
 
 import jason.infra.local.BaseLocalMAS;
 import jason.infra.local.LocalRuntimeServices;
+
+import rason.bridge.Bridge;
 
 /**
  * Jason's local runtime services, except that the agent names (what
@@ -20,7 +20,7 @@ public class RasonRuntimeServices extends LocalRuntimeServices {
 
     @Override
     public Collection<String> getAgentsNames() {
-        return RasonHub.get().allNames();
+        return Bridge.get().allNames();
     }
 
     @Override

@@ -1,7 +1,5 @@
 package rason.infra;
 
-import rason.RasonHub;
-
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.util.ArrayList;
@@ -11,6 +9,8 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.logging.Handler;
 import java.util.logging.LogRecord;
 import java.util.logging.SimpleFormatter;
+
+import rason.bridge.Bridge;
 
 /**
  * Sends java.util.logging records (Jason's own log and the agents' .print) to
@@ -44,7 +44,7 @@ public class RosLogHandler extends Handler {
             message = message + "\n" + trace;
         }
         String agent = agentOf(record.getLoggerName());
-        if (RasonHub.get().getConnector() == null) { // no rospy node (yet, or any more)
+        if (!Bridge.get().isAttached()) { // no rospy node (yet, or any more)
             System.err.println((agent.isEmpty() ? "" : "[" + agent + "] ") + message);
             return;
         }
@@ -76,7 +76,7 @@ public class RosLogHandler extends Handler {
         if (loggerName == null)
             return "";
         String last = loggerName.substring(loggerName.lastIndexOf('.') + 1);
-        return RasonHub.get().hostedNames().contains(last) ? last : "";
+        return Bridge.get().registry().names().contains(last) ? last : "";
     }
 
     @Override

@@ -1,7 +1,5 @@
 package rason.messaging;
 
-import rason.RasonHub;
-
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.HashMap;
@@ -16,7 +14,7 @@ import java.util.TreeSet;
 /**
  * Which agents of other rason_mas processes ("peers") can be reached, from
  * their presence announcements and the messages they send. Pure bookkeeping:
- * time is passed in and nothing is logged here; {@link RasonHub} owns the one
+ * time is passed in and nothing is logged here; {@link Fleet} owns the one
  * instance and calls it under its lock.
  * <p>
  * An agent is <em>reachable</em> when its peer was heard within the timeout,

@@ -1,0 +1,307 @@
+package rason.bridge;
+
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.logging.Level;
+import java.util.logging.Logger;
+
+import jason.asSyntax.Literal;
+import jason.infra.local.LocalAgArch;
+
+import rason.RosAgArch;
+import rason.action.ActionFeedback;
+import rason.messaging.Fleet;
+import rason.messaging.Messages;
+import rason.messaging.WarnOnce;
+import rason.perception.PerceptionManagers;
+import rason.perception.Perceptions;
+
+/**
+ * Where one rospy process meets the agents its JVM hosts (one per JVM, since
+ * Jason creates the architectures by reflection). The node's ROS threads push
+ * perceptions, events, agent messages, presence and the ROS time in through
+ * the methods here; the agents hand what goes out to the {@link Outbox}, which
+ * a thread of the node drains. Configuration comes from the node's ~params.
+ */
+public final class Bridge implements Fleet.Listener {
+
+    // before INSTANCE: the constructor uses it
+    private static final Logger logger = Logger.getLogger("rason.bridge");
+    private static final Bridge INSTANCE = new Bridge();
+
+    private final AgentRegistry registry = new AgentRegistry();
+    private final RosClock clock = new RosClock();
+    private final Outbox outbox = new Outbox();
+    private final Fleet fleet = new Fleet(logger, this);
+    private final WarnOnce warned = new WarnOnce(logger);
+    private final Object presencePushLock = new Object();
+    private int lastActionId = 0; // guarded by this
+
+    private volatile long actionTimeoutNanos = 60_000_000_000L;
+    private volatile long perceptionTtlNanos = 2_000_000_000L;
+    private volatile long askTimeoutNanos = 60_000_000_000L;
+    private volatile boolean presenceBeliefs = true;
+    private volatile String defaultPerceptionManager = PerceptionManagers.PER_SOURCE;
+    private volatile String shutdownReason = null;
+    private volatile boolean attached = false;
+
+    private Bridge() {
+    }
+
+    public static Bridge get() {
+        return INSTANCE;
+    }
+
+    public AgentRegistry registry() {
+        return registry;
+    }
+
+    public RosClock clock() {
+        return clock;
+    }
+
+    public Outbox outbox() {
+        return outbox;
+    }
+
+    public Fleet fleet() {
+        return fleet;
+    }
+
+    // ---- configuration (from the node's ~params) -------------------------------------
+
+    /** 0 or less disables the timeout. */
+    public void setActionTimeoutNanos(long t) {
+        actionTimeoutNanos = t;
+    }
+
+    /** 0 or less: perceptions never expire. */
+    public void setPerceptionTtlNanos(long t) {
+        perceptionTtlNanos = t;
+    }
+
+    /** ROS time a synchronous ask to a remote agent may wait; 0 or less waits as long as the receiver is present. */
+    public void setAskTimeoutNanos(long t) {
+        askTimeoutNanos = t;
+    }
+
+    public long askTimeoutNanos() {
+        return askTimeoutNanos;
+    }
+
+    /** Whether agents get present(Name) percepts. */
+    public void setPresenceBeliefs(boolean on) {
+        presenceBeliefs = on;
+        reachableChanged();
+    }
+
+    /**
+     * The strategy of agents whose .mas2j names none.
+     *
+     * @throws IllegalArgumentException if it names no strategy
+     */
+    public void setDefaultPerceptionManager(String spec) {
+        PerceptionManagers.create(spec); // fail now, not at each agent
+        defaultPerceptionManager = spec;
+    }
+
+    public String defaultPerceptionManager() {
+        return defaultPerceptionManager;
+    }
+
+    // ---- life cycle --------------------------------------------------------------------
+
+    /** A rospy node takes the outbox and the log from now on. */
+    public void attach() {
+        shutdownReason = null;
+        outbox.open();
+        attached = true;
+    }
+
+    /** The node is gone: nothing more is published, Java logs to stderr. */
+    public void detach() {
+        attached = false;
+        outbox.close();
+    }
+
+    public boolean isAttached() {
+        return attached;
+    }
+
+    /** The process is stopping: every pending and future action, and every pending remote ask, fails with reason. */
+    public void shutdown(String reason) {
+        shutdownReason = reason;
+        for (RosAgArch arch : registry.all())
+            arch.failPending(reason);
+    }
+
+    /** Non-null once the process is stopping: new actions fail with this reason. */
+    public String shutdownReason() {
+        return shutdownReason;
+    }
+
+    public synchronized int nextActionId() {
+        return ++lastActionId;
+    }
+
+    // ---- agents ------------------------------------------------------------------------
+
+    public void register(RosAgArch arch) {
+        registry.add(arch);
+        fleet.localAgentsChanged(registry.names());
+        reachableChanged();
+    }
+
+    public void unregister(RosAgArch arch) {
+        if (registry.remove(arch)) {
+            fleet.localAgentsChanged(registry.names());
+            reachableChanged();
+        }
+    }
+
+    /** What .all_names answers: the hosted agents and every reachable agent of other processes, sorted. */
+    public List<String> allNames() {
+        Set<String> all = new TreeSet<>(AgentRegistry.jasonAgents().keySet());
+        all.addAll(registry.names());
+        all.addAll(fleet.reachable());
+        return new ArrayList<>(all);
+    }
+
+    /** Names of the hosted agents, sorted (the node announces them). */
+    public String[] agentNames() {
+        return registry.sortedNames();
+    }
+
+    public boolean hosts(String agent) {
+        return registry.hosts(agent);
+    }
+
+    // ---- input from ROS ---------------------------------------------------------------
+
+    /**
+     * A rason_msgs/Perception arrived: parse it once and hand it to every agent.
+     * Unparsable literals are logged with their source and dropped; the rest is kept.
+     *
+     * @return how many literals were accepted
+     */
+    public int perceive(String source, String[] texts, long nowNanos) {
+        List<Literal> literals = new ArrayList<>(texts.length);
+        for (String text : texts) {
+            try {
+                literals.add(Perceptions.parse(text));
+            } catch (IllegalArgumentException e) {
+                logger.warning("dropped perception '" + text + "' from source '" + source + "': " + e.getMessage());
+            }
+        }
+        List<Literal> shared = List.copyOf(literals);
+        for (RosAgArch arch : registry.all())
+            arch.perceptionUpdate(source, shared, nowNanos);
+        return shared.size();
+    }
+
+    /**
+     * A rason_msgs/Event arrived. Events for agents not hosted here, of
+     * unknown types or malformed are ignored with a log line.
+     *
+     * @return true if it settled an action
+     */
+    public boolean event(String agent, String eventType, String[] parameters) {
+        RosAgArch arch = registry.get(agent);
+        if (arch == null) {
+            warned.log("event:" + agent, Level.INFO, "ignoring events for agent '" + agent + "': not hosted here (logged once)");
+            return false;
+        }
+        ActionFeedback fb;
+        try {
+            fb = ActionFeedback.parse(eventType, parameters);
+        } catch (IllegalArgumentException e) {
+            logger.warning("ignored event for " + agent + ": " + e.getMessage());
+            return false;
+        }
+        return arch.feedback(fb.actionId(), fb.result());
+    }
+
+    /** Ends an action with a result of the bridge's own (e.g. no_decomposer), from a thread of the node. */
+    public boolean actionFailed(String agent, int actionId, String reason) {
+        RosAgArch arch = registry.get(agent);
+        return arch != null && arch.feedback(actionId, reason);
+    }
+
+    /** Called periodically with the ROS time: the one clock of timeouts and expiry. */
+    public void tick(long nowNanos) {
+        clock.set(nowNanos);
+        for (RosAgArch arch : registry.all())
+            arch.tick(nowNanos, actionTimeoutNanos, perceptionTtlNanos);
+    }
+
+    /** A rason_msgs/Presence arrived (see {@link Fleet#presenceAnnounced}). */
+    public void presenceAnnounced(String mas, long incarnation, String[] names, boolean leaving) {
+        fleet.presenceAnnounced(mas, incarnation, names, leaving);
+    }
+
+    /** Periodic presence check with the processes our message publisher is connected to. */
+    public void presenceTick(String[] linkedMas) {
+        fleet.presenceTick(linkedMas);
+    }
+
+    /** This process's id in agent messages and presence: the rason_mas node name. */
+    public void setMasId(String id) {
+        fleet.setMasId(id);
+    }
+
+    public void setPresenceTimeoutNanos(long t) {
+        fleet.setPresenceTimeoutNanos(t);
+    }
+
+    /**
+     * A rason_msgs/AgentMessage arrived. Messages for other processes and our
+     * own are ignored; malformed ones are logged and dropped.
+     *
+     * @return how many hosted agents it was delivered to
+     */
+    public int deliverMessage(String senderMas, String sender, String receiverMas, String receiver,
+            String performative, String content, String msgId, String inReplyTo) {
+        Fleet.Incoming in = fleet.accept(senderMas, sender, receiverMas, receiver, performative, content,
+                registry.hosts(sender));
+        if (in == null)
+            return 0;
+        var hosted = AgentRegistry.jasonAgents();
+        List<String> to = receiver.isEmpty() ? new ArrayList<>(hosted.keySet()) : List.of(receiver);
+        int delivered = 0;
+        for (String name : to) {
+            LocalAgArch la = hosted.get(name);
+            if (la == null) {
+                fleet.noSuchReceiver(name, in.what());
+                continue;
+            }
+            la.receiveMsg(Messages.toJason(performative, sender, name, in.content(), msgId, inReplyTo));
+            delivered++;
+        }
+        return delivered;
+    }
+
+    // ---- Fleet.Listener ----------------------------------------------------------------
+
+    /** Gives every agent the current present/1 list; the lock keeps a newer list from being overtaken by an older one. */
+    @Override
+    public void reachableChanged() {
+        synchronized (presencePushLock) {
+            List<String> names = presenceBeliefs ? allNames() : List.of();
+            for (RosAgArch arch : registry.all())
+                arch.presenceUpdate(names);
+        }
+    }
+
+    @Override
+    public void receiversLost(Collection<String> names) {
+        for (RosAgArch arch : registry.all())
+            arch.receiversLost(names);
+    }
+
+    public static void log(Level level, String message) {
+        logger.log(level, message);
+    }
+}

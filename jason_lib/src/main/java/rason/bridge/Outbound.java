@@ -1,0 +1,21 @@
+package rason.bridge;
+
+/**
+ * What the agents hand to the rospy node: queued on the agent's thread by
+ * {@link Outbox#offer}, published by a thread of the node.
+ */
+public sealed interface Outbound permits Outbound.Action, Outbound.AgentMessage, Outbound.Stop {
+
+    /** A rason_msgs/Action for jason/action. */
+    record Action(String agent, int actionId, String action, String[] parameters) implements Outbound {
+    }
+
+    /** A rason_msgs/AgentMessage for another process (receiverMas empty: every other process). */
+    record AgentMessage(String receiverMas, String sender, String receiver, String performative, String content,
+            String msgId, String inReplyTo) implements Outbound {
+    }
+
+    /** An agent ran .stopMAS: the node shuts down and exits with this status. */
+    record Stop(int exitValue) implements Outbound {
+    }
+}

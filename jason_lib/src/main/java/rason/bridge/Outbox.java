@@ -1,0 +1,52 @@
+package rason.bridge;
+
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * The one way from the agents' threads to ROS: agents queue what they want
+ * published and return at once; a thread of the rospy node takes it with
+ * {@link #take}, blocking in Java (JPype lets the other Python threads run
+ * meanwhile). So an agent thread never calls into Python nor waits for ROS.
+ */
+public final class Outbox {
+
+    private final BlockingQueue<Outbound> queue = new LinkedBlockingQueue<>();
+    private volatile boolean open = false;
+
+    /**
+     * Queues one item for the node.
+     *
+     * @return false if no node takes items (not started, or stopped)
+     */
+    public boolean offer(Outbound item) {
+        return open && queue.offer(item);
+    }
+
+    /** The next item, waiting at most timeoutMillis; null if none came. */
+    public Outbound take(long timeoutMillis) throws InterruptedException {
+        return queue.poll(timeoutMillis, TimeUnit.MILLISECONDS);
+    }
+
+    /** The next item if one is queued, else null. */
+    public Outbound poll() {
+        return queue.poll();
+    }
+
+    public boolean isOpen() {
+        return open;
+    }
+
+    void open() {
+        open = true;
+    }
+
+    void close() {
+        open = false;
+    }
+
+    public int size() {
+        return queue.size();
+    }
+}

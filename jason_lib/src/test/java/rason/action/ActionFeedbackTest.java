@@ -1,0 +1,52 @@
+package rason.action;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+class ActionFeedbackTest {
+
+    @Test
+    void okWithItsId() {
+        assertEquals(new ActionFeedback(17, "OK"), ActionFeedback.parse("action_feedback", new String[] { "OK", "17" }));
+    }
+
+    @Test
+    void resultAndIdAreTrimmedAndExtraParametersIgnored() {
+        assertEquals(new ActionFeedback(3, "no_progress"),
+                ActionFeedback.parse("action_feedback", new String[] { " no_progress ", " 3", "extra" }));
+    }
+
+    @Test
+    void unknownEventTypeIsRefused() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> ActionFeedback.parse("status", new String[] { "OK", "1" }));
+        assertTrue(e.getMessage().contains("unknown event type 'status'"), e.getMessage());
+    }
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+            "OK          |             | needs parameters",
+            "OK          | seven       | not a 32-bit integer",
+            "OK          | 1.5         | not a 32-bit integer",
+            "OK          | 2147483648  | not a 32-bit integer",
+            "OK          | -2147483649 | not a 32-bit integer",
+            "'  '        | 1           | empty result",
+    })
+    void malformedParametersAreRefusedWithAReason(String result, String id, String why) {
+        String[] parameters = id == null ? new String[] { result } : new String[] { result, id };
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> ActionFeedback.parse("action_feedback", parameters));
+        assertTrue(e.getMessage().contains(why), e.getMessage());
+    }
+
+    @Test
+    void noParametersAtAllIsRefused() {
+        assertThrows(IllegalArgumentException.class, () -> ActionFeedback.parse("action_feedback", new String[0]));
+        assertThrows(IllegalArgumentException.class, () -> ActionFeedback.parse("action_feedback", null));
+    }
+}

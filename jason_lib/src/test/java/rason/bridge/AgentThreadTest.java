@@ -1,0 +1,173 @@
+package rason.bridge;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.function.BooleanSupplier;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import jason.asSemantics.Unifier;
+import jason.asSyntax.ASSyntax;
+import rason.RosAgArch;
+import rason.infra.RasonLocalMAS;
+
+/**
+ * Real Jason agents with RosAgArch and nobody draining the outbox — as if the
+ * rospy side were blocked: act() must return at once (the agent's other
+ * intentions go on), and feedback, timeouts, shutdown and .stopMAS all work
+ * through the Java side alone.
+ */
+class AgentThreadTest {
+
+    private static final long SECOND = 1_000_000_000L;
+    private static final long WAIT_MS = 10_000;
+
+    private final Bridge bridge = Bridge.get();
+    private RasonLocalMAS mas;
+
+    @TempDir
+    Path dir;
+
+    private RosAgArch start(String agent, String program) throws Exception {
+        Files.writeString(dir.resolve(agent + ".asl"), program);
+        Files.writeString(dir.resolve("test.mas2j"), "MAS test { agents: " + agent + "; }");
+        bridge.attach();
+        bridge.setActionTimeoutNanos(60 * SECOND);
+        bridge.tick(100 * SECOND);
+        mas = new RasonLocalMAS();
+        mas.load(dir.resolve("test.mas2j").toString());
+        mas.create();
+        mas.start();
+        RosAgArch arch = bridge.registry().get(agent);
+        assertNotNull(arch, "agent " + agent + " registered");
+        return arch;
+    }
+
+    @AfterEach
+    void stop() throws Exception {
+        bridge.shutdown(Protocol.SHUTDOWN);
+        if (mas != null)
+            assertTrue(mas.stopAgents(5000), "agent threads end");
+        bridge.detach();
+        while (bridge.outbox().poll() != null) {
+            // nothing of this test reaches the next one
+        }
+    }
+
+    private static boolean believes(RosAgArch arch, String literal) {
+        try {
+            return arch.getTS().getAg().believes(ASSyntax.parseLiteral(literal), new Unifier());
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    private static void await(String what, BooleanSupplier condition) throws InterruptedException {
+        long deadline = System.currentTimeMillis() + WAIT_MS;
+        while (!condition.getAsBoolean()) {
+            if (System.currentTimeMillis() > deadline)
+                throw new AssertionError("timed out waiting for " + what);
+            Thread.sleep(5);
+        }
+    }
+
+    private Outbound.Action nextAction() throws InterruptedException {
+        Outbound item = bridge.outbox().take(WAIT_MS);
+        assertNotNull(item, "an action was queued");
+        return assertInstanceOf(Outbound.Action.class, item);
+    }
+
+    private static final String WORKER = """
+            !work.
+            !count(0).
+            +!work <- move(1, "fast"); +moved.
+            -!work[R|Rest] : .member(Why, [timeout, shutdown, no_progress]) & .member(Why, [R|Rest]) <- +failed(Why).
+            +!count(N) : N < 200 <- -+counted(N + 1); !count(N + 1).
+            +!count(_) <- +counted_all.
+            """;
+
+    @Test
+    void actReturnsAtOnceAndTheAgentGoesOnWhileNobodyPublishes() throws Exception {
+        RosAgArch arch = start("worker", WORKER);
+        Outbound.Action a = nextAction();
+        assertEquals("worker", a.agent());
+        assertEquals("move", a.action());
+        assertEquals(java.util.List.of("1", "fast"), java.util.List.of(a.parameters()));
+        // nobody took the action to ROS, yet the agent's other intention runs to its end
+        await("the other intention ends", () -> believes(arch, "counted_all"));
+        assertFalse(believes(arch, "moved"));
+        assertTrue(bridge.event("worker", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + a.actionId() }));
+        await("the action's intention resumes", () -> believes(arch, "moved"));
+    }
+
+    @Test
+    void aFailureReasonFailsTheIntentionWithIt() throws Exception {
+        RosAgArch arch = start("worker", WORKER);
+        Outbound.Action a = nextAction();
+        bridge.event("worker", Protocol.ACTION_FEEDBACK, new String[] { "no_progress", "" + a.actionId() });
+        await("-!work with no_progress", () -> believes(arch, "failed(no_progress)"));
+    }
+
+    @Test
+    void badAndForeignEventsChangeNothing() throws Exception {
+        RosAgArch arch = start("worker", WORKER);
+        Outbound.Action a = nextAction();
+        assertFalse(bridge.event("someone_else", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + a.actionId() }));
+        assertFalse(bridge.event("worker", "status", new String[] { Protocol.OK, "" + a.actionId() }));
+        assertFalse(bridge.event("worker", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "2147483648" }));
+        assertFalse(bridge.event("worker", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + (a.actionId() + 1000) }));
+        assertEquals(1, pending(arch));
+        assertTrue(bridge.event("worker", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + a.actionId() }));
+        await("the action's intention resumes", () -> believes(arch, "moved"));
+        assertFalse(bridge.event("worker", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + a.actionId() }),
+                "late feedback is ignored");
+    }
+
+    @Test
+    void timeoutFollowsThePushedRosClock() throws Exception {
+        RosAgArch arch = start("worker", WORKER);
+        bridge.setActionTimeoutNanos(2 * SECOND);
+        nextAction();
+        bridge.tick(101 * SECOND);
+        await("the other intention ends", () -> believes(arch, "counted_all"));
+        assertFalse(believes(arch, "failed(timeout)"), "1 s of ROS time is within the timeout");
+        bridge.tick(103 * SECOND);
+        await("-!work with timeout", () -> believes(arch, "failed(timeout)"));
+    }
+
+    @Test
+    void shutdownFailsPendingActionsAndLaterOnesAtOnce() throws Exception {
+        RosAgArch arch = start("worker", WORKER + "+failed(_) <- move(2); +moved_after.\n"
+                + "-!g[error(E)] <- true.\n");
+        nextAction();
+        bridge.shutdown(Protocol.SHUTDOWN);
+        await("-!work with shutdown", () -> believes(arch, "failed(shutdown)"));
+        // the plan's next action failed at once (no intention waits), and nothing more was queued
+        await("the -! plan's action ended", () -> pending(arch) == 0 && !arch.getTS().getC().hasRunningIntention());
+        assertNull(bridge.outbox().poll());
+        assertFalse(believes(arch, "moved_after"));
+    }
+
+    @Test
+    void stopMasIsQueuedForTheNodeWithItsExitValue() throws Exception {
+        start("stopper", "!go.\n+!go <- .stopMAS(0, 3).\n");
+        Outbound item = bridge.outbox().take(WAIT_MS);
+        assertEquals(new Outbound.Stop(3), item);
+    }
+
+    private static int pending(RosAgArch arch) {
+        return arch.pendingActions();
+    }
+
+    private static void assertNull(Object o) {
+        org.junit.jupiter.api.Assertions.assertNull(o);
+    }
+}
