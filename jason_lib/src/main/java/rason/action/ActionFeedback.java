@@ -23,8 +23,8 @@ public record ActionFeedback(int actionId, String result) {
         try {
             return new ActionFeedback(Integer.parseInt(id), result);
         } catch (NumberFormatException e) {
-            throw new IllegalArgumentException(Protocol.ACTION_FEEDBACK + " with action id '" + id
-                    + "', not a 32-bit integer");
+            throw new IllegalArgumentException(Protocol.ACTION_FEEDBACK + " with a non-integer action id '" + id
+                    + "' (ids are 32-bit integers)");
         }
     }
 }

@@ -31,10 +31,10 @@ class ActionFeedbackTest {
     @ParameterizedTest
     @CsvSource(delimiter = '|', value = {
             "OK          |             | needs parameters",
-            "OK          | seven       | not a 32-bit integer",
-            "OK          | 1.5         | not a 32-bit integer",
-            "OK          | 2147483648  | not a 32-bit integer",
-            "OK          | -2147483649 | not a 32-bit integer",
+            "OK          | seven       | non-integer action id",
+            "OK          | 1.5         | non-integer action id",
+            "OK          | 2147483648  | non-integer action id",
+            "OK          | -2147483649 | non-integer action id",
             "'  '        | 1           | empty result",
     })
     void malformedParametersAreRefusedWithAReason(String result, String id, String why) {
