@@ -143,7 +143,7 @@ public final class PresenceTable {
         Set<String> links = new HashSet<>(linkedMas);
         for (Peer p : new ArrayList<>(peers.values())) {
             if (nowNanos - p.heardNanos > timeoutNanos)
-                drop(p, String.format("not heard for %.1f s", (nowNanos - p.heardNanos) / 1e9), c);
+                drop(p, String.format(java.util.Locale.ROOT, "not heard for %.1f s", (nowNanos - p.heardNanos) / 1e9), c);
             else {
                 p.linked = links.contains(p.masId);
                 p.everLinked |= p.linked;
