@@ -30,7 +30,7 @@ ROSENV := set +u; source $(CURDIR)/devel/setup.bash; set -u;
 
 help:
 	@echo "make demo   - set up, then run the case study (both actuators faulty) in the simulator"
-	@echo "make test   - set up, then run unit tests (pytest) and rostests"
+	@echo "make test   - set up, then run unit tests (JUnit, pytest) and rostests"
 	@echo "make setup  - install Debian packages, build jason_lib (Maven) and the catkin workspace"
 	@echo "make bench  - benchmarks (see README)"
 
