@@ -86,6 +86,15 @@ def frozen_odometry(frozen, incoming):
                     pose=frozen.pose, twist=frozen.twist)
 
 
+def _publish(publisher, msg):
+    """Publishes msg; a message that arrives while the node shuts down is dropped quietly."""
+    try:
+        publisher.publish(msg)
+    except rospy.ROSException:
+        if not rospy.is_shutdown():
+            raise
+
+
 class FaultInjectorNode(object):
     """Owns the publishers, subscribers, service and timer of the node.
 
@@ -136,7 +145,7 @@ class FaultInjectorNode(object):
                                    % (rospy.resolve_name('cmd_vel_in'), lin + ang))
         with self._lock:
             lin, ang = self._state.twist(lin, ang)
-        self._cmd_pub.publish(Twist(linear=Vector3(*lin), angular=Vector3(*ang)))
+        _publish(self._cmd_pub, Twist(linear=Vector3(*lin), angular=Vector3(*ang)))
 
     def _on_odom(self, msg):
         if faults.has_nan(odom_numbers(msg)):
@@ -144,7 +153,7 @@ class FaultInjectorNode(object):
                                    % rospy.resolve_name('odom_in'))
         with self._lock:
             out = self._state.odom(msg)
-        self._odom_pub.publish(frozen_odometry(out, msg))
+        _publish(self._odom_pub, frozen_odometry(out, msg))
 
     def _publish_status(self):
         fault = self.fault
