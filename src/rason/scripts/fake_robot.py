@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """A scripted stand-in for a robot's decomposer and synthesizer, for rostests and the demo.
 
-~results (dict, {}): action name -> feedback result ("OK", "no_progress", ...);
+~results (dict, {}): action name -> feedback result: a word of rason_msgs/Event ("OK",
+    "no_progress", ...) or any other text;
     actions not listed are dropped, as a decomposer drops what it does not handle.
 ~delays (dict, {}): action name -> seconds before the feedback.
 ~seen_after_turns (int, -1): after this many answered turn actions, publish
@@ -42,7 +43,7 @@ class FakeRobot(object):
             time.sleep(0.01)
         if msg.action == 'turn':
             self.turns += 1
-        self.events.publish(Event(agent=msg.agent, event_type='action_feedback',
+        self.events.publish(Event(agent=msg.agent, event_type=Event.ACTION_FEEDBACK,
                                   parameters=[self.results[msg.action], str(msg.action_id)]))
 
     def publish_perception(self, _event):

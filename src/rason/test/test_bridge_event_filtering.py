@@ -32,21 +32,21 @@ class TestEventFiltering(unittest.TestCase):
         self.assertTrue(self.actions, 'hold(1) was never published')
         action_id = self.actions[0].action_id
 
-        self.events.publish(feedback('someone_else', 'OK', action_id))
-        self.events.publish(feedback('holder', 'OK', action_id, event_type='status'))
-        self.events.publish(Event(agent='holder', event_type='action_feedback', parameters=['OK']))
-        self.events.publish(feedback('holder', 'OK', 'seven'))
-        self.events.publish(feedback('holder', 'OK', action_id + 1000))
+        self.events.publish(feedback('someone_else', Event.OK, action_id))
+        self.events.publish(feedback('holder', Event.OK, action_id, event_type='status'))
+        self.events.publish(Event(agent='holder', event_type=Event.ACTION_FEEDBACK, parameters=[Event.OK]))
+        self.events.publish(feedback('holder', Event.OK, 'seven'))
+        self.events.publish(feedback('holder', Event.OK, action_id + 1000))
 
         self.assertTrue(self.log.wait_for(r'ignoring events for agent .someone_else.'))
         self.assertTrue(self.log.wait_for(r'unknown event type .status.'))
         self.assertTrue(self.log.wait_for(r'needs parameters \[result, action_id\]'))
         self.assertTrue(self.log.wait_for(r'non-integer action id .seven.'))
-        self.assertTrue(self.log.wait_for(r'ignored feedback .OK. for action id %d' % (action_id + 1000)))
+        self.assertTrue(self.log.wait_for(r'ignored feedback .%s. for action id %d' % (Event.OK, action_id + 1000)))
         rospy.sleep(0.5)
         self.assertFalse(self.log.lines(r'^\[holder\] hold (finished|failed|timed out)'))
 
-        self.events.publish(feedback('holder', 'OK', action_id))
+        self.events.publish(feedback('holder', Event.OK, action_id))
         self.assertTrue(self.log.wait_for(r'^\[holder\] hold finished$', timeout=10))
 
 
