@@ -1,15 +1,9 @@
 """Unit tests of fault_injector.faults (thesis §6.3, Eq. 6.2 and 6.3); no ROS master."""
 import math
-import os
-import sys
 
 import pytest
 
-try:
-    from fault_injector import faults
-except ImportError:  # workspace not built/sourced: use the source tree (faults has no ROS import)
-    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'src'))
-    from fault_injector import faults
+from fault_injector import faults
 
 ZERO = (0.0, 0.0, 0.0)
 NAN = float('nan')

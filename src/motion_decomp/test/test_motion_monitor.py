@@ -5,6 +5,7 @@ import random
 import pytest
 
 from motion_decomp import monitor as m
+from rason_msgs.msg import Event
 
 DT = 0.05  # 20 Hz, the node's default control rate
 
@@ -108,9 +109,9 @@ def test_no_command_without_odometry_and_after_the_end():
     assert mon.command() == (0.0, 0.0)
     assert mon.update((0.0, 0.0, 0.0), 0.05) is None
     assert mon.command() == (0.2, 0.0)
-    assert mon.update((1.0, 0.0, 0.0), 0.1) == m.OK
+    assert mon.update((1.0, 0.0, 0.0), 0.1) == Event.OK
     assert mon.command() == (0.0, 0.0)
-    assert mon.update((1.0, 0.0, 0.0), 0.15) == m.OK   # stays ended
+    assert mon.update((1.0, 0.0, 0.0), 0.15) == Event.OK   # stays ended
 
 
 # ---------------------------------------------------------------- move
@@ -119,7 +120,7 @@ def test_move_forward_reaches_the_goal_along_the_heading():
     start = (3.0, -1.0, 2.5)
     mon = monitor('move', '1', start)
     result, t, (x, y, _), _ = drive(mon, start)
-    assert result == m.OK
+    assert result == Event.OK
     assert 1.0 <= math.hypot(x - 3.0, y + 1.0) < 1.0 + 0.2 * DT + 1e-9
     assert t == pytest.approx(1.0 / 0.2, abs=2 * DT)
     # went where the robot was facing
@@ -130,7 +131,7 @@ def test_move_backward_reaches_the_goal_behind_the_robot():
     start = (0.0, 0.0, -1.0)
     mon = monitor('move', '-0.5', start)
     result, _, (x, y, _), _ = drive(mon, start)
-    assert result == m.OK
+    assert result == Event.OK
     assert x * math.cos(-1.0) + y * math.sin(-1.0) == pytest.approx(-0.5, abs=0.011)
 
 
@@ -138,12 +139,12 @@ def test_move_does_not_end_before_the_distance():
     mon = monitor('move', '1')
     assert mon.update((0.5, 0.0, 0.0), 0.1) is None
     assert mon.update((0.999, 0.0, 0.0), 0.2) is None
-    assert mon.update((1.0, 0.0, 0.0), 0.3) == m.OK
+    assert mon.update((1.0, 0.0, 0.0), 0.3) == Event.OK
 
 
 def test_move_of_zero_is_ok_at_once_even_without_odometry():
     mon = m.MotionMonitor(m.Motion('move', 0.0), None, 0.0)
-    assert mon.update(None, 0.0) == m.OK
+    assert mon.update(None, 0.0) == Event.OK
 
 
 # ---------------------------------------------------------------- no_progress and timeout
@@ -153,7 +154,7 @@ def test_stuck_odometry_is_no_progress_after_one_second_not_before():
     stuck = (1.0, 2.0, 0.3)
     for t in (10.05, 10.5, 10.95, 11.0):
         assert mon.update(stuck, t) is None, t
-    assert mon.update(stuck, 11.05) == m.NO_PROGRESS
+    assert mon.update(stuck, 11.05) == Event.NO_PROGRESS
 
 
 def test_robot_that_stops_halfway_is_no_progress_one_second_later():
@@ -170,7 +171,7 @@ def test_robot_that_stops_halfway_is_no_progress_one_second_later():
 
     mon = monitor('move', '1')
     result, t, pose, _ = drive(mon, (0.0, 0.0, 0.0), plant=blocked, noise=noise)
-    assert result == m.NO_PROGRESS
+    assert result == Event.NO_PROGRESS
     blocked_at = stop_at / 0.2
     assert blocked_at + 1.0 < t <= blocked_at + 1.0 + 2 * DT
     assert pose[0] == pytest.approx(stop_at, abs=0.011)
@@ -185,7 +186,7 @@ def test_jitter_below_the_thresholds_is_still_no_progress():
         # 0.5 mm and 0.05 degree of jitter: below 1 mm / 0.1 degree
         jitter = 0.0005 if int(t / DT) % 2 else 0.0
         result = mon.update((jitter, 0.0, math.radians(jitter * 100)), t)
-    assert result == m.NO_PROGRESS
+    assert result == Event.NO_PROGRESS
     assert 1.0 < t <= 1.0 + 2 * DT
 
 
@@ -198,7 +199,7 @@ def test_slow_but_steady_progress_is_not_no_progress():
         t += DT
         x += 0.002 * DT / 0.6
         result = mon.update((x, 0.0, 0.0), t)
-    assert result == m.OK
+    assert result == Event.OK
 
 
 def test_no_odometry_at_all_is_no_progress_after_one_second():
@@ -206,7 +207,7 @@ def test_no_odometry_at_all_is_no_progress_after_one_second():
     assert mon.update(None, 5.5) is None
     assert mon.update(None, 6.0) is None
     assert mon.command() == (0.0, 0.0)   # never drives blind
-    assert mon.update(None, 6.05) == m.NO_PROGRESS
+    assert mon.update(None, 6.05) == Event.NO_PROGRESS
 
 
 def test_late_first_odometry_gives_the_robot_a_full_second():
@@ -215,13 +216,13 @@ def test_late_first_odometry_gives_the_robot_a_full_second():
     assert mon.update(None, 0.9) is None
     assert mon.update((0.0, 0.0, 0.0), 0.95) is None
     assert mon.update((0.0, 0.0, 0.0), 1.9) is None
-    assert mon.update((0.0, 0.0, 0.0), 2.0) == m.NO_PROGRESS
+    assert mon.update((0.0, 0.0, 0.0), 2.0) == Event.NO_PROGRESS
 
 
 def test_no_progress_time_is_a_parameter():
     mon = monitor('move', '1', no_progress_time=2.5)
     assert mon.update((0.0, 0.0, 0.0), 2.5) is None
-    assert mon.update((0.0, 0.0, 0.0), 2.55) == m.NO_PROGRESS
+    assert mon.update((0.0, 0.0, 0.0), 2.55) == Event.NO_PROGRESS
 
 
 def test_non_finite_pose_is_ignored():
@@ -237,7 +238,7 @@ def test_timeout_ends_a_motion_that_never_arrives():
     # turning the wrong way forever: progress, but never the goal
     mon = monitor('turn', '30', max_duration=3.0)
     result, t, _, _ = drive(mon, (0.0, 0.0, 0.0), plant=lambda v, w: (v, -w))
-    assert result == m.TIMEOUT
+    assert result == Event.TIMEOUT
     assert t == pytest.approx(3.0, abs=DT + 1e-9)
 
 
@@ -252,7 +253,7 @@ def test_curved_path_of_an_actuator_fault_is_bad_move(side, metres):
 
     mon = monitor('move', metres, (2.0, 1.0, 0.7))
     result, _, pose, _ = drive(mon, (2.0, 1.0, 0.7), plant=fault)
-    assert result == m.BAD_MOVE
+    assert result == Event.BAD_MOVE
     gone = math.hypot(pose[0] - 2.0, pose[1] - 1.0)
     # caught well before the goal, but only after the measuring distance
     assert 0.05 <= gone < 0.5
@@ -270,13 +271,13 @@ def test_small_noise_on_a_straight_path_is_no_false_bad_move():
         for metres in ('1', '-0.6'):
             mon = monitor('move', metres, (0.0, 0.0, 1.0))
             result, _, _, _ = drive(mon, (0.0, 0.0, 1.0), noise=noise)
-            assert result == m.OK, (seed, metres)
+            assert result == Event.OK, (seed, metres)
 
 
 def test_direction_is_not_judged_before_the_measuring_distance():
     mon = monitor('move', '1')
     assert mon.update((0.0, 0.04, 0.0), 0.1) is None        # sideways, but too short to tell
-    assert mon.update((0.0, 0.06, 0.0), 0.2) == m.BAD_MOVE  # now it counts
+    assert mon.update((0.0, 0.06, 0.0), 0.2) == Event.BAD_MOVE  # now it counts
 
 
 def test_bad_move_threshold_is_the_cosine():
@@ -286,12 +287,12 @@ def test_bad_move_threshold_is_the_cosine():
     assert ok.update((0.3 * math.cos(a), 0.3 * math.sin(a), 0.0), 1.0) is None
     bad = monitor('move', '1')
     a = math.radians(8.2)
-    assert bad.update((0.3 * math.cos(a), -0.3 * math.sin(a), 0.0), 1.0) == m.BAD_MOVE
+    assert bad.update((0.3 * math.cos(a), -0.3 * math.sin(a), 0.0), 1.0) == Event.BAD_MOVE
 
 
 def test_moving_forward_when_backward_was_asked_is_bad_move():
     mon = monitor('move', '-1')
-    assert mon.update((0.1, 0.0, 0.0), 0.5) == m.BAD_MOVE
+    assert mon.update((0.1, 0.0, 0.0), 0.5) == Event.BAD_MOVE
 
 
 # ---------------------------------------------------------------- turn
@@ -309,7 +310,7 @@ def test_turn_reaches_the_angle_across_the_yaw_wrap(degrees, start_yaw):
     start = (1.0, 1.0, start_yaw)
     mon = monitor('turn', degrees, start)
     result, t, (_, _, yaw), seen = drive(mon, start)
-    assert result == m.OK
+    assert result == Event.OK
     want = math.radians(float(degrees))
     assert t == pytest.approx(abs(want) / 0.5, abs=2 * DT)
     # positive degrees are clockwise: the yaw went down by the angle
@@ -323,7 +324,7 @@ def test_turn_360_does_not_end_at_half_way_or_when_the_yaw_is_back_near_start():
     assert mon.update((0.0, 0.0, -math.pi + 0.01), 6.0) is None
     assert mon.update((0.0, 0.0, math.pi / 2), 9.0) is None
     assert mon.update((0.0, 0.0, 0.01), 12.0) is None
-    assert mon.update((0.0, 0.0, 0.0), 12.1) == m.OK
+    assert mon.update((0.0, 0.0, 0.0), 12.1) == Event.OK
 
 
 def test_turn_the_wrong_way_does_not_count():
@@ -368,7 +369,7 @@ def test_scheduler_runs_motions_one_at_a_time_in_fifo_order():
         elif cmd is not None:
             pose = unicycle(pose, *cmd)
         t += DT
-    assert [fb for fb, _ in feedbacks] == [m.Feedback('r1', 1, m.OK), m.Feedback('r1', 2, m.OK)]
+    assert [fb for fb, _ in feedbacks] == [m.Feedback('r1', 1, Event.OK), m.Feedback('r1', 2, Event.OK)]
     # the turn only started after the move: while moving, never an angular command
     first_end = commands.index((0.0, 0.0))
     assert all(c[1] == 0.0 for c in commands[:first_end])
@@ -396,8 +397,8 @@ def test_scheduler_starts_the_next_motion_from_where_the_robot_is():
 def test_scheduler_fails_bad_parameters_at_once_and_ignores_nothing_else():
     s = m.MotionScheduler()
     s.submit('a', 1, 'move', ['1'])
-    assert s.submit('b', 7, 'move', ['abc']) == m.Feedback('b', 7, m.BAD_PARAMETERS)
-    assert s.submit('b', 8, 'turn', []) == m.Feedback('b', 8, m.BAD_PARAMETERS)
+    assert s.submit('b', 7, 'move', ['abc']) == m.Feedback('b', 7, Event.BAD_PARAMETERS)
+    assert s.submit('b', 8, 'turn', []) == m.Feedback('b', 8, Event.BAD_PARAMETERS)
     assert s.pending == 1
     with pytest.raises(m.UnknownAction):
         s.submit('b', 9, 'say', ['hello'])
@@ -408,7 +409,7 @@ def test_scheduler_cancel_all_reports_running_and_queued():
     s.submit('a', 1, 'move', ['1'])
     s.submit('a', 2, 'turn', ['10'])
     s.step((0.0, 0.0, 0.0), 0.0)
-    assert s.cancel_all() == [m.Feedback('a', 1, m.SHUTDOWN), m.Feedback('a', 2, m.SHUTDOWN)]
+    assert s.cancel_all() == [m.Feedback('a', 1, Event.SHUTDOWN), m.Feedback('a', 2, Event.SHUTDOWN)]
     assert s.step((0.0, 0.0, 0.0), 1.0) == (None, None)
 
 
@@ -422,7 +423,7 @@ def test_scheduler_no_odometry_fails_no_progress_and_never_drives():
         if fb is not None:
             break
         t += DT
-    assert fb == m.Feedback('a', 3, m.NO_PROGRESS)
+    assert fb == m.Feedback('a', 3, Event.NO_PROGRESS)
     assert 1.0 < t <= 1.0 + 2 * DT
     assert set(cmds) == {(0.0, 0.0)}
 
@@ -442,8 +443,8 @@ def test_node_conversions():
     odom.pose.pose.position.y = float('nan')
     assert node.pose_from_odometry(odom) is None
 
-    ev = node.feedback_event(m.Feedback('bob', 42, m.BAD_MOVE))
-    assert (ev.agent, ev.event_type, list(ev.parameters)) == ('bob', 'action_feedback', ['bad_move', '42'])
+    ev = node.feedback_event(m.Feedback('bob', 42, Event.BAD_MOVE))
+    assert (ev.agent, ev.event_type, list(ev.parameters)) == ('bob', Event.ACTION_FEEDBACK, [Event.BAD_MOVE, '42'])
     tw = node.twist(0.0, -0.5)
     assert (tw.linear.x, tw.angular.z) == (0.0, -0.5)
     assert node.agent_filter('a, b c') == {'a', 'b', 'c'}

@@ -1,8 +1,16 @@
-# pytest (make unit) collects only the campaign's unit tests here: the other test_*.py
-# scripts of this folder are rostest nodes that need a master.
+# pytest (make unit) collects only the unit tests of this folder: the test_*.py scripts
+# that a .test file runs are rostest nodes that need a master, so they are left out here.
+import glob
 import os
+import re
 
-_here = os.path.dirname(os.path.abspath(__file__))
-collect_ignore = [name for name in os.listdir(_here)
-                  if name.endswith('.py') and name != 'conftest.py'
-                  and not name.startswith('test_campaign_')]
+
+def _rostest_scripts(folder):
+    names = set()
+    for path in glob.glob(os.path.join(folder, '*.test')):
+        with open(path) as f:
+            names.update(re.findall(r'type="(test_[^"]+\.py)"', f.read()))
+    return sorted(names)
+
+
+collect_ignore = _rostest_scripts(os.path.dirname(os.path.abspath(__file__)))

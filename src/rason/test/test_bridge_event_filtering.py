@@ -32,22 +32,26 @@ class TestEventFiltering(unittest.TestCase):
         self.assertTrue(self.actions, 'hold(1) was never published')
         action_id = self.actions[0].action_id
 
-        self.events.publish(feedback('someone_else', 'OK', action_id))
-        self.events.publish(feedback('holder', 'OK', action_id, event_type='status'))
-        self.events.publish(Event(agent='holder', event_type='action_feedback', parameters=['OK']))
-        self.events.publish(feedback('holder', 'OK', 'seven'))
-        self.events.publish(feedback('holder', 'OK', action_id + 1000))
+        # Each event to ignore carries a failure reason of its own: had one reached the
+        # pending action, the agent's one line about hold would name it.
+        self.events.publish(feedback('someone_else', 'wrong_agent', action_id))
+        self.events.publish(feedback('holder', 'wrong_type', action_id, event_type='status'))
+        self.events.publish(Event(agent='holder', event_type=Event.ACTION_FEEDBACK, parameters=['no_id']))
+        self.events.publish(feedback('holder', 'bad_id', 'seven'))
+        self.events.publish(feedback('holder', 'unknown_id', action_id + 1000))
 
         self.assertTrue(self.log.wait_for(r'ignoring events for agent .someone_else.'))
         self.assertTrue(self.log.wait_for(r'unknown event type .status.'))
         self.assertTrue(self.log.wait_for(r'needs parameters \[result, action_id\]'))
         self.assertTrue(self.log.wait_for(r'non-integer action id .seven.'))
-        self.assertTrue(self.log.wait_for(r'ignored feedback .OK. for action id %d' % (action_id + 1000)))
-        rospy.sleep(0.5)
-        self.assertFalse(self.log.lines(r'^\[holder\] hold (finished|failed|timed out)'))
+        self.assertTrue(self.log.wait_for(r'ignored feedback .unknown_id. for action id %d' % (action_id + 1000)))
 
-        self.events.publish(feedback('holder', 'OK', action_id))
-        self.assertTrue(self.log.wait_for(r'^\[holder\] hold finished$', timeout=10))
+        # the right feedback, on the same topic after the others: the bridge handles the
+        # events in order, so the first line about hold tells which event ended it
+        self.events.publish(feedback('holder', Event.OK, action_id))
+        ended = self.log.wait_for(r'^\[holder\] hold (finished|failed|timed out|stopped|has no)', timeout=10)
+        self.assertTrue(ended, 'hold never ended')
+        self.assertEqual([l[3] for l in ended], ['[holder] hold finished'])
 
 
 if __name__ == '__main__':

@@ -19,6 +19,13 @@ class TestFailureReasons(unittest.TestCase):
         cls.log = LogWatcher()
         cls.go = start_agents(cls.log)
 
+    def wait_until_every_goal_ended(self):
+        """Each of mover's four goals ends with exactly one line: once all four are in, no
+        plan of mover can still print."""
+        ends = self.log.wait_for(r'^\[mover\] (move|curve|jam|spin) (ok|failed)', count=4)
+        self.assertEqual(len(ends), 4, 'not every goal ended: %r'
+                         % [l[3] for l in self.log.lines(r'^\[mover\] ')])
+
     def test_reason_matches_a_failure_plan_annotation(self):
         self.assertTrue(self.log.wait_for(r'^\[mover\] move failed: no_progress matched$'))
 
@@ -30,10 +37,12 @@ class TestFailureReasons(unittest.TestCase):
 
     def test_ok_resumes_the_intention(self):
         self.assertTrue(self.log.wait_for(r'^\[mover\] spin ok$'))
+        self.wait_until_every_goal_ended()
         self.assertFalse(self.log.lines(r'otherwise|spin failed'))
 
     def test_architecture_named_in_the_project_is_not_added_twice(self):
         self.assertTrue(self.log.wait_for(r'spin ok'))
+        self.wait_until_every_goal_ended()
         self.assertEqual(rospy.get_param('/rason_mas/agents'), ['mover'])
         self.assertEqual(len(self.log.lines(r'^\[mover\] spin ok$')), 1)
 

@@ -29,6 +29,9 @@ class TestShutdown(unittest.TestCase):
         rospy.Subscriber('jason/action', Action, cls.actions.append)
 
     def run_and_signal(self, name, signum):
+        # what an earlier method saw (even one that failed half-way) is not this one's
+        del self.actions[:]
+        self.log.clear()
         proc = subprocess.Popen(['rosrun', 'rason_bridge', 'rason_mas',
                                  os.path.join(HERE, 'agents', 'holder.mas2j'), '__name:=' + name])
         try:
@@ -39,7 +42,7 @@ class TestShutdown(unittest.TestCase):
             deadline = time.monotonic() + 20
             while not any(a.agent == 'holder' for a in self.actions) and time.monotonic() < deadline:
                 time.sleep(0.05)
-            self.assertTrue(self.actions, 'hold(1) was never published')
+            self.assertTrue(any(a.agent == 'holder' for a in self.actions), 'hold(1) was never published')
             go.unregister()
             sent = time.monotonic()
             proc.send_signal(signum)
@@ -51,8 +54,6 @@ class TestShutdown(unittest.TestCase):
         finally:
             if proc.poll() is None:
                 proc.kill()
-        del self.actions[:]
-        self.log.clear()
 
     def test_sigterm(self):
         self.run_and_signal('mas_sigterm', signal.SIGTERM)

@@ -32,8 +32,9 @@ class TestTimeout(unittest.TestCase):
         self.assertLess(waited, 15.0)
 
         self.assertTrue(wait_for_subscribers(events))
-        events.publish(feedback('holder', 'OK', seen[0][1].action_id))
-        self.assertTrue(log.wait_for(r'ignored feedback .OK. for action id %d' % seen[0][1].action_id))
+        events.publish(feedback('holder', Event.OK, seen[0][1].action_id))
+        self.assertTrue(log.wait_for(r'ignored feedback .%s. for action id %d'
+                                     % (Event.OK, seen[0][1].action_id)))
         self.assertFalse(log.lines(r'hold finished'))
 
 

@@ -6,7 +6,6 @@ stops the node with a clear message."""
 import os
 import subprocess
 import sys
-import time
 import unittest
 
 import rospy
@@ -47,7 +46,12 @@ class TestNaming(unittest.TestCase):
         self.expect(r'^\[r1_member\] told hello\(21\) by r1_leader$')
         run(self.log, self.r2, 'r2_leader', 'send(member, tell, hello(22))', 'sent')
         self.expect(r'^\[r2_member\] told hello\(22\) by r2_leader$')
-        time.sleep(0.5)
+        # had a short name left its robot, the message would have gone over the shared
+        # topic: later messages to the other robot's member on the same connection come after it
+        run(self.log, self.r1, 'r1_leader', 'send(r2_member, tell, hello(23))', 'sent')
+        self.expect(r'^\[r2_member\] told hello\(23\) by r1_leader$')
+        run(self.log, self.r2, 'r2_leader', 'send(r1_member, tell, hello(24))', 'sent')
+        self.expect(r'^\[r1_member\] told hello\(24\) by r2_leader$', node='/robot1/rason_mas')
         self.assertFalse(self.log.lines(r'^\[r2_member\] told hello\(21\)'))
         self.assertFalse(self.log.lines(r'^\[r1_member\] told hello\(22\)'))
 
@@ -68,7 +72,9 @@ class TestNaming(unittest.TestCase):
             self.assertTrue(self.log.wait_ready())
             run(self.log, self.r2, 'r2_leader', 'send(r1_member, tell, hello(41))', 'sent')
             self.expect(r'^\[r1_member\] told hello\(41\) by r2_leader$', node='/robot1/rason_mas')
-            time.sleep(1.0)
+            # a broadcast from robot2 reaches robot3 on the connection hello(41) would have taken
+            run(self.log, self.r2, 'r2_leader', 'broadcast(tell, hello(42))', 'broadcast')
+            self.expect(r'^\[r1_member\] told hello\(42\) by r2_leader$', node='/robot3/rason_mas')
             self.assertFalse(self.log.lines(r'told hello\(41\)', node='/robot3/rason_mas'))
             # still four names, not six
             self.assertEqual(run(self.log, self.r2, 'r2_leader', 'names', r'names .*'), ALL)

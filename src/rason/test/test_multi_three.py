@@ -4,7 +4,6 @@ reaches all the others (and only once each), achieve starts goals remotely with 
 right source, a list of receivers spans processes, and answers come from the asked one."""
 import os
 import sys
-import time
 import unittest
 
 import rospy
@@ -46,7 +45,15 @@ class TestThreeProcesses(unittest.TestCase):
             for receiver in AGENTS:
                 if receiver != sender:
                     self.expect(r'^\[%s\] told hello\(%d\) by %s$' % (receiver, 20 + k, sender))
-        time.sleep(1.0)
+        # Then each process tells the other two something on the same topic. A second copy
+        # of a broadcast would have come before it on the same connection; a copy back to
+        # the sender before these answers, sent after the broadcast had arrived.
+        for k, sender in enumerate(AGENTS):
+            others = [a for a in AGENTS if a != sender]
+            run(self.log, self.robots[sender], sender,
+                'send([%s], tell, hello(%d))' % (', '.join(others), 30 + k), 'sent')
+            for receiver in others:
+                self.expect(r'^\[%s\] told hello\(%d\) by %s$' % (receiver, 30 + k, sender))
         for k, sender in enumerate(AGENTS):
             for receiver in AGENTS:
                 got = self.log.lines(r'^\[%s\] told hello\(%d\) by' % (receiver, 20 + k))
@@ -59,6 +66,12 @@ class TestThreeProcesses(unittest.TestCase):
         self.expect(r'^\[carol\] asked to greet from_alice by alice$')
         run(self.log, self.robots['bob'], 'bob', 'send(carol, achieve, greet(from_bob))', 'sent')
         self.expect(r'^\[carol\] asked to greet from_bob by bob$')
+        # bob heard carol's greet for alice and alice's for carol on his connections from
+        # their processes: later messages to him on the same connections come after them
+        run(self.log, self.robots['carol'], 'carol', 'send(bob, tell, hello(35))', 'sent')
+        self.expect(r'^\[bob\] told hello\(35\) by carol$')
+        run(self.log, self.robots['alice'], 'alice', 'send(bob, tell, hello(36))', 'sent')
+        self.expect(r'^\[bob\] told hello\(36\) by alice$')
         self.assertFalse(self.log.lines(r'^\[bob\] asked to greet from_(carol|alice)'))
 
     def test_4_a_list_of_receivers_spans_processes(self):

@@ -48,19 +48,29 @@ class TestPerceptionManagers(unittest.TestCase):
         self.assertTrue(found, 'never saw %r' % line)
         return found[0][0]
 
-    def test_1_selective_agent_gets_only_what_it_declared(self):
+    def cam(self):
+        """Publish cam's list and wait until plain has it. Idempotent (the same list again
+        changes no agent's percepts), so every test that needs cam's percepts calls it."""
         self.send('cam', 'robot(r1,1,2,3)', 'battery(50)', 'temp(20)')
         self.expect(r'^\[plain\] \+robot r1$')
         self.expect(r'^\[plain\] \+battery 50$')
         self.expect(r'^\[plain\] \+temp 20$')
+
+    def test_1_selective_agent_gets_only_what_it_declared(self):
+        self.cam()
         self.expect(r'^\[picky\] \+robot r1$')
-        time.sleep(1.0)
+        # cam's other percepts would have been events of the same update as robot r1: a
+        # later update that picky takes proves they are behind it
+        self.send('cam_marker', 'robot(marker1,0,0,0)')
+        self.expect(r'^\[picky\] \+robot marker1$')
         self.assertFalse(self.log.lines(r'^\[picky\] \+(battery|temp)'))
         # the bridge's present/1 is filtered too: picky did not declare it
         self.assertFalse(self.log.lines(r'^\[picky\] present'))
 
     def test_2_selection_changes_at_run_time(self):
+        self.cam()
         self.expect(r'^\[picky\] \+robot r1$')
+        self.addCleanup(self.command, 'picky', 'perceive_only(["robot/4", "cmd/3"])', r'perceiving only .*')
         self.command('picky', 'perceive_only(["battery/1", "cmd/3"])', r'perceiving only .*')
         # what cam sent last is re-filtered at once, without cam publishing again
         self.expect(r'^\[picky\] \+battery 50$')
@@ -73,40 +83,47 @@ class TestPerceptionManagers(unittest.TestCase):
         self.assertIn("'robot' is not functor/arity", out)
 
     def test_3_rate_limit_holds_a_burst_and_applies_the_newest(self):
-        self.send('counter', 'count(1)')
         sent = time.monotonic()
-        first = self.expect(r'^\[slow\] \+count 1$')
-        for k in range(2, 11):  # nine more within about 0.2 s, inside slow's 0.5 s window
-            time.sleep(0.02)
+        self.send('counter', 'count(1)')
+        self.expect(r'^\[slow\] \+count 1$')
+        for k in range(2, 11):  # nine more at once, inside slow's 0.5 s window
             self.send('counter', 'count(%d)' % k)
-        burst = time.monotonic() - sent
         last = self.expect(r'^\[slow\] \+count 10$')
         self.expect(r'^\[plain\] \+count 10$')
-        time.sleep(1.0)
+        # a later update from the same source: anything of the burst still held back
+        # would come before it
+        self.send('counter', 'count(11)')
+        self.expect(r'^\[slow\] \+count 11$')
         between = self.log.lines(r'^\[slow\] \+count ([2-9])$')
-        # none, unless this busy machine stretched the burst over more than one window
-        self.assertLessEqual(len(between), int(burst / 0.5), 'slow saw held-back updates: %r' % between)
-        self.assertGreater(last - first, 0.35)  # the newest waited for the window
-        print('rate limit 2/s: burst of 10 in 0.2 s -> 2 updates, the last %.2f s after the first' % (last - first))
+        # none on an idle machine; a loose bound for one that delays some of the nine
+        self.assertLessEqual(len(between), 2, 'slow saw held-back updates: %r' % between)
+        # count(1) opened a 0.5 s window when it was applied, after it was sent: the newest
+        # of the burst waited for that window to end
+        self.assertGreater(last - sent, 0.45)
+        print('rate limit 2/s: burst of 10 -> %d updates, the newest %.2f s after the first was sent'
+              % (2 + len(between), last - sent))
 
     def test_4_rate_limit_bounds_a_steady_stream(self):
-        self.log.clear()
         start = time.monotonic()
         k = 100
-        while time.monotonic() - start < 2.0:  # 20 Hz for 2 s
+        while time.monotonic() - start < 2.0:  # 20 Hz for 2 s: about 40 updates
             k += 1
             self.send('stream', 'count(%d)' % k)
             time.sleep(0.05)
+        sent = k - 100
         self.expect(r'^\[slow\] \+count %d$' % k)  # nothing stale sticks
-        time.sleep(0.5)
+        self.expect(r'^\[plain\] \+count %d$' % k)
         slow = len(self.log.lines(r'^\[slow\] \+count 1\d\d$'))
         plain = len(self.log.lines(r'^\[plain\] \+count 1\d\d$'))
-        print('steady 20 Hz for 2 s: plain saw %d updates, slow (2/s) saw %d' % (plain, slow))
-        self.assertGreaterEqual(slow, 3)
-        self.assertLessEqual(slow, 7)
-        self.assertGreater(plain, 2 * slow)
+        print('steady 20 Hz for 2 s: %d sent, plain saw %d updates, slow (2/s) saw %d' % (sent, plain, slow))
+        # about 5 at 2/s; loose bounds (the rates themselves are make bench's): the first
+        # and the newest get through, most of the stream is held back, plain is not limited
+        self.assertGreaterEqual(slow, 2)
+        self.assertLessEqual(slow, sent // 4)
+        self.assertGreater(plain, slow)
 
     def test_5_accumulate_keeps_every_message_per_source_replaces(self):
+        self.cam()
         self.send('thermo', 'temp(1)')
         self.expect(r'^\[hoarder\] \+temp 1$')
         self.send('thermo', 'temp(2)')

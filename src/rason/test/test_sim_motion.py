@@ -13,6 +13,7 @@ import rostest
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'nodes'))
 from sim_testing import SimRobot, wrap_degrees  # noqa: E402
 from geometry_msgs.msg import PoseStamped  # noqa: E402
+from rason_msgs.msg import Event  # noqa: E402
 from rason_msgs.srv import FaultInjector  # noqa: E402
 
 START = (-1.0, -0.75, 0.0)
@@ -64,15 +65,15 @@ class TestSimMotion(unittest.TestCase):
 
     def test_healthy_move_there_and_back(self):
         start = self.robot.pose()
-        self.assertEqual(self.robot.act('move', 1), 'OK')
+        self.assertEqual(self.robot.act('move', 1), Event.OK)
         self.assertAlmostEqual(self.moved(start), 1.0, delta=0.05)
-        self.assertEqual(self.robot.act('move', -1), 'OK')
+        self.assertEqual(self.robot.act('move', -1), Event.OK)
         rospy.loginfo('move(1), move(-1): back within %.3f m of the start', self.moved(start))
         self.assertLess(self.moved(start), 0.05)
 
     def test_healthy_turn_right_90(self):
         start = self.robot.pose()
-        self.assertEqual(self.robot.act('turn', 90), 'OK')
+        self.assertEqual(self.robot.act('turn', 90), Event.OK)
         rospy.sleep(0.5)  # let the base come to rest
         turned = wrap_degrees(math.degrees(self.robot.pose()[2] - start[2]))
         rospy.loginfo('turn(90): turned %.2f deg', turned)
@@ -82,25 +83,25 @@ class TestSimMotion(unittest.TestCase):
     def test_both_actuators_no_progress_and_robot_still(self):
         self.assertIn('both_actuators', self.inject_fault('both_actuators').return_message)
         start = self.robot.pose()
-        self.assertEqual(self.robot.act('move', 1), 'no_progress')
+        self.assertEqual(self.robot.act('move', 1), Event.NO_PROGRESS)
         self.assertLess(self.moved(start), 0.02)
 
     def test_odometry_fault_no_progress_while_robot_moves(self):
         self.inject_fault('odometry')
         start = self.robot.pose()
-        self.assertEqual(self.robot.act('move', 1), 'no_progress')
+        self.assertEqual(self.robot.act('move', 1), Event.NO_PROGRESS)
         self.assertGreater(self.moved(start), 0.1)
 
     def test_left_actuator_bad_move_curving_left(self):
         self.inject_fault('left_actuator')
         start = self.robot.pose()
-        self.assertEqual(self.robot.act('move', 1), 'bad_move')
+        self.assertEqual(self.robot.act('move', 1), Event.BAD_MOVE)
         self.assertGreater(self.path.max_lateral(start), 0.005)
 
     def test_right_actuator_bad_move_curving_right(self):
         self.inject_fault('right_actuator')
         start = self.robot.pose()
-        self.assertEqual(self.robot.act('move', 1), 'bad_move')
+        self.assertEqual(self.robot.act('move', 1), Event.BAD_MOVE)
         self.assertLess(self.path.max_lateral(start), -0.005)
 
 

@@ -2,8 +2,8 @@
 
 Publishes each diagnosis on /diagnostics (DiagnosticStatus ``rason/diagnosis``, values
 agent, component, evidence), once at once and then every ``~period`` s while it is the
-latest (diagnostic aggregators expect repeats), and answers the action OK, or
-``bad_parameters`` when the component is unknown.
+latest (diagnostic aggregators expect repeats), and answers the action ``Event.OK``, or
+``Event.BAD_PARAMETERS`` when the component is unknown.
 """
 import threading
 
@@ -32,16 +32,16 @@ class DiagnosisReporter(object):
             diagnosis = report.parse(msg.agent, list(msg.parameters))
         except report.BadDiagnosis as e:
             rospy.logerr('diagnosis_reporter: %s', e)
-            self._answer(msg, 'bad_parameters')
+            self._answer(msg, Event.BAD_PARAMETERS)
             return
         rospy.loginfo('diagnosis_reporter: %s', diagnosis.message)
         with self._lock:
             self._latest = diagnosis
         self._publish()
-        self._answer(msg, 'OK')
+        self._answer(msg, Event.OK)
 
     def _answer(self, action, result):
-        self._event_pub.publish(Event(agent=action.agent, event_type='action_feedback',
+        self._event_pub.publish(Event(agent=action.agent, event_type=Event.ACTION_FEEDBACK,
                                       parameters=[result, str(action.action_id)]))
 
     def _publish(self):

@@ -1,4 +1,5 @@
-"""Motion decomposition core (thesis §5.3, §6.3): plain Python, no ROS.
+"""Motion decomposition core (thesis §5.3, §6.3): plain Python, no rospy (only the
+protocol's words from the generated ``rason_msgs.msg.Event``).
 
 Turns the agents' ``move(Metres)`` and ``turn(Degrees)`` actions into velocity
 commands and decides, from odometry poses, when a motion has ended and how.
@@ -17,7 +18,8 @@ Poses are ``(x, y, yaw)`` tuples (metres, metres, radians, ROS frame
 conventions); times are floats in seconds. The node feeds ROS time, so
 simulated time works.
 
-Results (``parameters[0]`` of the ``action_feedback`` event):
+Results (``parameters[0]`` of the ``Event.ACTION_FEEDBACK`` event), spelled by the
+constants of ``rason_msgs/Event`` (``Event.OK``, ``Event.NO_PROGRESS``, ...):
 
 ``OK``
     the travelled distance (straight line from the start pose) or the turned
@@ -44,17 +46,13 @@ import math
 import re
 from collections import deque, namedtuple
 
+# Only the generated message class (genpy), for the protocol's words: no rospy here.
+from rason_msgs.msg import Event
+
 MOVE = 'move'
 TURN = 'turn'
 #: The action functors this decomposer executes; all others belong to other decomposers.
 MOTION_ACTIONS = (MOVE, TURN)
-
-OK = 'OK'
-NO_PROGRESS = 'no_progress'
-BAD_MOVE = 'bad_move'
-BAD_PARAMETERS = 'bad_parameters'
-TIMEOUT = 'timeout'
-SHUTDOWN = 'shutdown'
 
 #: Pose changes below both of these count as "no progress".
 PROGRESS_DISTANCE = 0.001          # metres
@@ -235,7 +233,7 @@ class MotionMonitor(object):
         if self.result is not None:
             return self.result
         if self.motion.amount == 0:  # nothing to do, with or without odometry
-            return self._end(OK)
+            return self._end(Event.OK)
         if pose is not None and not is_finite_pose(pose):
             pose = None
         if pose is not None:
@@ -245,9 +243,9 @@ class MotionMonitor(object):
             if result is not None:
                 return self._end(result)
         if now - self._still_since > self.no_progress_time:
-            return self._end(NO_PROGRESS)
+            return self._end(Event.NO_PROGRESS)
         if now - self.started >= self.max_duration:
-            return self._end(TIMEOUT)
+            return self._end(Event.TIMEOUT)
         return None
 
     def _track(self, pose, now):
@@ -269,12 +267,12 @@ class MotionMonitor(object):
                 d = self._direction()
                 cos = d * (dx * math.cos(yaw0) + dy * math.sin(yaw0)) / self.travelled
                 if cos < self.bad_move_min_cos:
-                    return BAD_MOVE
+                    return Event.BAD_MOVE
             if self.travelled >= abs(self.motion.amount):
-                return OK
+                return Event.OK
         else:
             if self.turned * self._direction() >= math.radians(abs(self.motion.amount)):
-                return OK
+                return Event.OK
         return None
 
     def _end(self, result):
@@ -326,7 +324,7 @@ class MotionScheduler(object):
         try:
             motion = parse_motion(action, parameters)
         except BadParameters:
-            return Feedback(agent, action_id, BAD_PARAMETERS)
+            return Feedback(agent, action_id, Event.BAD_PARAMETERS)
         self._queue.append(_Request(agent, action_id, motion))
         return None
 
@@ -354,7 +352,7 @@ class MotionScheduler(object):
         self.current = None
         return (0.0, 0.0), Feedback(request.agent, request.action_id, result)
 
-    def cancel_all(self, reason=SHUTDOWN):
+    def cancel_all(self, reason=Event.SHUTDOWN):
         """End the running and all queued motions; returns their feedback, oldest first.
 
         :param reason: the failure reason to report

@@ -37,9 +37,6 @@ from rason_msgs.msg import Action, Event
 
 from motion_decomp import monitor
 
-ACTION_FEEDBACK = 'action_feedback'
-
-
 def pose_from_odometry(msg):
     """``(x, y, yaw)`` of a nav_msgs/Odometry, or ``None`` when a field is NaN/inf.
 
@@ -56,7 +53,7 @@ def feedback_event(feedback):
 
     :param feedback: agent, action id and result
     """
-    return Event(agent=feedback.agent, event_type=ACTION_FEEDBACK,
+    return Event(agent=feedback.agent, event_type=Event.ACTION_FEEDBACK,
                  parameters=[feedback.result, str(feedback.action_id)])
 
 
@@ -151,7 +148,7 @@ class MotionDecompNode(object):
         self._timer.shutdown()
         with self._lock:
             was_running = self._scheduler.current is not None
-            feedbacks = self._scheduler.cancel_all(monitor.SHUTDOWN)
+            feedbacks = self._scheduler.cancel_all(Event.SHUTDOWN)
         try:
             if was_running:
                 self._cmd_pub.publish(twist(0.0, 0.0))

@@ -1,6 +1,7 @@
 // Faulty: the robot with the fault (thesis §6.4, Appendix A Listing A.1), on a robot of
 // its own with its own rason_mas. The plans are the thesis's; changes are marked
-//   FIX       needed on real Jason or on noisy perception (DESIGN.md §3),
+//   FIX       needed on real Jason or on noisy perception (each FIX says what the thesis's
+//             listing did and why it fails; the README's case-study section sums them up),
 //   IMPROVED  asked for by thesis §8.1, or an explicit ending when evidence is missing
 //             (a wrong diagnosis is worse than "undiagnosed").
 

@@ -84,6 +84,7 @@ def write_report(out, meta, results):
 
 
 def main(argv=None):
+    """The campaign command; exits with status 1 when a run was diagnosed wrongly."""
     from rason_campaign import bagread, runner  # ROS only here
     args = parse_args(sys.argv[1:] if argv is None else argv)
     bags = args.bags or os.path.join(args.out, 'bags')
@@ -124,4 +125,4 @@ def main(argv=None):
     print('campaign: %d correct, %d undiagnosed, %d wrong of %d runs in %.0f s; report %s'
           % (s['counts']['correct'], s['counts']['undiagnosed'], s['counts']['wrong'],
              s['runs'], time.monotonic() - t0, os.path.join(args.out, 'report.md')))
-    return 0 if s['counts']['wrong'] == 0 else 1
+    sys.exit(0 if s['counts']['wrong'] == 0 else 1)

@@ -64,7 +64,7 @@ class LogWatcher(object):
                 self._cond.wait(min(left, 0.1))
 
 
-def feedback(agent, result, action_id, event_type='action_feedback'):
+def feedback(agent, result, action_id, event_type=Event.ACTION_FEEDBACK):
     """An Event message as a decomposer sends it."""
     return Event(agent=agent, event_type=event_type, parameters=[result, str(action_id)])
 

@@ -66,7 +66,7 @@ class SimRobot(object):
             self._lock.notify_all()
 
     def _on_event(self, msg):
-        if msg.agent != self.agent or msg.event_type != 'action_feedback' or len(msg.parameters) < 2:
+        if msg.agent != self.agent or msg.event_type != Event.ACTION_FEEDBACK or len(msg.parameters) < 2:
             return
         with self._lock:
             self._results[msg.parameters[1]] = msg.parameters[0]
@@ -108,7 +108,7 @@ class SimRobot(object):
         rospy.sleep(settle)
 
     def act(self, action, *parameters, timeout=120.0):
-        """Publish a decomposer action and return its result (OK or a failure reason)."""
+        """Publish a decomposer action and return its result (Event.OK or a failure reason)."""
         self._next_id += 1
         action_id = str(self._next_id)
         self._actions.publish(Action(agent=self.agent, action_id=self._next_id, action=action,

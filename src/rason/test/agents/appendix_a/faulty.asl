@@ -1,5 +1,7 @@
-// Agent faulty: thesis Appendix A, Listing A.1, run unchanged except for the
-// fixes marked FIX (see DESIGN.md section 3).
+// Agent faulty: thesis Appendix A, Listing A.1, run unchanged except where the listing
+// does not work on real Jason, marked FIX: the failure reason read from Jason's sorted
+// annotations, the helper's giveFeedback instead of givemeFeedback, the sender R printed
+// instead of an unbound Helper.
 
 /* Initial beliefs and rules */
 

@@ -1,4 +1,4 @@
-from rason_bridge.dialogue import format_diagnosis, format_message
+from rason_tools.dialogue import format_diagnosis, format_message
 
 
 def test_broadcast_is_shown_as_all():

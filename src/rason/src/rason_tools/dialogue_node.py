@@ -1,12 +1,11 @@
-#!/usr/bin/python3
-"""Prints the agents' dialogue (/rason/messages) and each new diagnosis (/diagnostics),
-one line each, e.g. for make demo."""
+"""``rosrun rason rason_dialogue``: prints the agents' dialogue (/rason/messages) and each
+new diagnosis (/diagnostics), one line each, e.g. for make demo."""
 import rospy
 from diagnostic_msgs.msg import DiagnosticArray
 from rason_msgs.msg import AgentMessage
 
 from diagnosis_reporter.report import STATUS_NAME
-from rason_bridge.dialogue import format_diagnosis, format_message
+from rason_tools.dialogue import format_diagnosis, format_message
 
 
 def main():
@@ -30,7 +29,3 @@ def main():
     rospy.Subscriber('/rason/messages', AgentMessage, on_message, queue_size=100)
     rospy.Subscriber('/diagnostics', DiagnosticArray, on_diagnostics, queue_size=10)
     rospy.spin()
-
-
-if __name__ == '__main__':
-    main()
