@@ -38,8 +38,20 @@ def test_ratio_needs_a_positive_baseline():
 
 
 def test_a_cell_is_its_median_run_not_an_average():
-    from rason_bench.experiments import median_run
     runs = [{'ms': 0.009, 'cpu_percent': 150}, {'ms': 0.005, 'cpu_percent': 140},
             {'ms': 0.006, 'cpu_percent': 145}]
-    assert median_run(runs) == {'ms': 0.006, 'cpu_percent': 145}
-    assert median_run(runs[:1]) == runs[0]
+    assert stats.median_run(runs) == {'ms': 0.006, 'cpu_percent': 145}
+    assert stats.median_run(runs[:1]) == runs[0]
+    with pytest.raises(ValueError):
+        stats.median_run([])
+
+
+def test_pure_modules_do_not_import_rospy():
+    """The modules the unit tests cover run without ROS (a fresh interpreter, so that
+    another test's imports do not count)."""
+    import subprocess
+    import sys
+    code = ('import sys; import rason_bench.stats, rason_bench.report, rason_bench.protocol, '
+            'rason_bench.thesis; print(sorted(m for m in ("rospy", "rosgraph") if m in sys.modules))')
+    out = subprocess.run([sys.executable, '-c', code], stdout=subprocess.PIPE, universal_newlines=True, check=True)
+    assert out.stdout.strip() == '[]'

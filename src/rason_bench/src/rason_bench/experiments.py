@@ -129,7 +129,7 @@ def cycle_tables(procs, harness, modes, perceptions, rates, seconds, log, repeat
                     with Burst(procs, harness, p, r):
                         runs = [measured_cycle(mas, agent, iterations) for _ in range(repeats)]
                     after = measured_cycle(mas, agent, iterations)
-                    cell = median_run(runs)
+                    cell = stats.median_run(runs)
                     cell.update(perceptions=p, rate_hz=r, runs_ms=[x['ms'] for x in runs],
                                 baseline_ms=(before['ms'] + after['ms']) / 2.0,
                                 baseline_cpu_percent=(before['cpu_percent'] + after['cpu_percent']) / 2.0)
@@ -139,12 +139,6 @@ def cycle_tables(procs, harness, modes, perceptions, rates, seconds, log, repeat
                            cell['cpu_percent']))
         out[mode] = {'iterations': iterations, 'repeats': repeats, 'cells': cells}
     return out
-
-
-def median_run(runs):
-    """The run with the median time (an odd count gives a run that happened)."""
-    ordered = sorted(runs, key=lambda x: x['ms'])
-    return dict(ordered[len(ordered) // 2])
 
 
 def latencies(procs, harness, pings, stamps, stamp_period, log):

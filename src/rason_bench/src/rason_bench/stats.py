@@ -36,3 +36,12 @@ def ratio(value, baseline):
     if value is None or baseline is None or baseline <= 0:
         return None
     return value / baseline
+
+
+def median_run(runs):
+    """The run (a dict with ``ms``) with the median time; a copy. With an odd count it is a
+    run that happened, not an average of two."""
+    if not runs:
+        raise ValueError('median of no runs')
+    ordered = sorted(runs, key=lambda x: x['ms'])
+    return dict(ordered[len(ordered) // 2])
