@@ -56,8 +56,10 @@ class RunRecord(object):
 
 def port_free(port):
     """True when 127.0.0.1:port can be bound now (a master left there would be reused by
-    roslaunch, mixing two runs)."""
+    roslaunch, mixing two runs). Connections of a previous run still closing (TIME_WAIT) do
+    not count: the master binds with SO_REUSEADDR too."""
     with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
+        s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
         try:
             s.bind(('127.0.0.1', port))
         except OSError:
