@@ -25,6 +25,19 @@ value(0).
 // perception published -> belief event (the time is read when the plan is chosen)
 +stamp(Run, Seq, T)[source(percept)] : rason.time_ms(Now) <- seen(Run, Seq, Now - T).
 
+// reaction: a trigger percept -> an action at once (the harness times publish -> action)
++trigger(Run, Seq, T)[source(percept)] <- react(Run, Seq, T).
+
+// busy intentions: N loops, each doing a step of work per turn while go_spin(_, Run, _) is
+// perceived (the harness's next control percept replaces it), then reporting its turns
++go_spin(Me, Run, N)[source(percept)] : .my_name(Me)
+<- for (.range(I, 1, N)) { !!spin(Run, I, 0) }; spinning(Run, N).
++!spin(Run, I, K) : go_spin(_, Run, _)[source(percept)] <- X = (K * 7) mod 13; !!spin(Run, I, K + 1).
++!spin(Run, I, K) <- spun(Run, I, K).
+
+// perception rate limit: every update of the tick source that reaches this agent, timed here
++tick(Run, Seq)[source(percept)] : .my_name(Me) & rason.time_ms(T) <- ticked(Run, Me, Seq, T).
+
 // thesis Listing 5.4: one plan per perception
 +perception1(_) <- .print("p1").
 +perception2(_) <- .print("p2").

@@ -10,6 +10,32 @@ def test_reports_parse_from_action_parameters():
     assert protocol.parse_report('seen', ['5', '2', '1.25']) == protocol.Seen(5, 2, 1.25)
 
 
+def test_new_reports_parse_with_their_types():
+    assert protocol.parse_report('react', ['2', '7', '1.2345678912E7']) == protocol.Reacted(2, 7, 12345678.912)
+    assert protocol.parse_report('spinning', ['3', '50']) == protocol.Spinning(3, 50)
+    assert protocol.parse_report('spun', ['3', '12', '4017']) == protocol.Spun(3, 12, 4017)
+    assert protocol.parse_report('ticked', ['4', 'limited', '9', '55.5']) == protocol.Ticked(4, 'limited', 9, 55.5)
+
+
+@pytest.mark.parametrize('action, parameters', [('spun', ['3', '12', '4017.5']), ('spinning', ['1', 'inf']),
+                                                ('ticked', ['4', 'limited', 'x', '1'])])
+def test_counts_must_be_whole_numbers(action, parameters):
+    with pytest.raises(protocol.BadReport):
+        protocol.parse_report(action, parameters)
+
+
+def test_a_reaction_is_timed_on_the_stamps_clock():
+    r = protocol.reaction(protocol.Reacted(2, 7, 1000.0), 1012.5)
+    assert r == protocol.Reaction(2, 7, 12.5)
+
+
+def test_triggers_take_the_sources_in_turn():
+    sources = [protocol.trigger_source(seq) for seq in range(2 * protocol.TRIGGER_SOURCES)]
+    assert len(set(sources)) == protocol.TRIGGER_SOURCES
+    assert sources[:protocol.TRIGGER_SOURCES] == sources[protocol.TRIGGER_SOURCES:]
+    assert protocol.CONTROL_SOURCE not in sources
+
+
 def test_other_actions_are_not_reports():
     assert protocol.parse_report('ping', ['1']) is None
     assert protocol.parse_report('move', ['0.3']) is None
@@ -30,3 +56,7 @@ def test_control_percepts_name_agent_run_and_size():
     assert protocol.go_cycle('bench', 4, 20000) == 'go_cycle(bench,4,20000)'
     assert protocol.go_ping('bench2', 5, 100) == 'go_ping(bench2,5,100)'
     assert protocol.stamp(6, 3, 12345.6789) == 'stamp(6,3,12345.679)'
+    assert protocol.trigger(6, 3, 12345.6789) == 'trigger(6,3,12345.679)'
+    assert protocol.go_spin('bench', 7, 50) == 'go_spin(bench,7,50)'
+    assert protocol.stop_spin('bench', 7) == 'stop_spin(bench,7)'
+    assert protocol.tick(8, 2) == 'tick(8,2)'

@@ -1,4 +1,9 @@
 """Goals, tables and the thesis's values in report.md."""
+import os
+import re
+
+import pytest
+
 from rason_bench import report, thesis
 
 
@@ -61,3 +66,109 @@ def test_cpu_slowdown_counts_the_share_of_the_cores_the_node_got():
     c = {'ms': 0.03, 'cpu_percent': 50.0, 'baseline_ms': 0.02, 'baseline_cpu_percent': 100.0}
     assert report.slowdown(c) == 1.5
     assert report.cpu_slowdown(c) == 0.75   # slower only because it got half a core
+
+
+def _cpu(us, quiet=500.0):
+    def row(u):
+        return {'literals_per_message': 10, 'rate_hz': 50, 'window_s': 3, 'idle_cpu_percent': 2.0,
+                'cpu_percent': 30.0, 'us_per_message': u,
+                'runs': [{'cpu_s': 1.0, 'wall_s': 3.0, 'messages': 150, 'us_per_message': u}]}
+    return {'listing_5_4': row(us), 'no_plans': row(quiet)}
+
+
+def _reaction(p50, p99, seen=50, sent=50):
+    def row(a, b, n):
+        return {'reaction_ms': {'n': n, 'p50': a, 'p90': b, 'p99': b, 'max': b}, 'triggers_sent': sent,
+                'reaction_samples': [a] * n}
+    load = row(p50, p99, seen)
+    load.update(busy_intentions=50, busy_turns_per_s=9000.0, busy_intentions_reported=50, cpu_percent=150.0)
+    return {'idle': row(1.0, 3.0, sent), 'load': load}
+
+
+def _behaviour(wakeup_max=4.0, limited=4.8, plain=48.0, rtf=0.99, vision=9.8):
+    return {'wakeup': {'gap_s': 2.0, 'stamps_sent': 3, 'wakeup_samples': [3.0, 3.5, wakeup_max],
+                       'wakeup_ms': {'n': 3, 'p50': 3.5, 'p90': wakeup_max, 'p99': wakeup_max, 'max': wakeup_max}},
+            'rate_limit': {'sent': 150, 'sent_hz': 50.0, 'seconds': 3.0,
+                           'agents': {'limited': {'n': 15, 'per_s': limited, 'min_interval_ms': 200.0},
+                                      'plain': {'n': 148, 'per_s': plain, 'min_interval_ms': 15.0}}},
+            'sim': {'window_s': 10.0, 'settle_s': 2.0, 'real_time_factor': rtf,
+                    'rates_hz': {'faulty odom': 49.9, 'helper odom': 49.9, 'camera': 10.0, 'vision': vision}}}
+
+
+def _goal(results, start):
+    found = [(measured, met) for goal, measured, met in report.goals(results) if goal.startswith(start)]
+    assert len(found) == 1, found
+    return found[0]
+
+
+def test_new_measurements_each_have_a_goal():
+    results = _results()
+    results.update(cpu=_cpu(800.0), reaction=_reaction(5.0, 40.0), behaviour=_behaviour())
+    verdicts = report.goals(results)
+    assert len(verdicts) == 4 + 1 + 2 + 1 + 1 + 5
+    assert all(met for _, _, met in verdicts)
+    assert _goal(results, 'node CPU per perception message') == ('800 µs (without perception plans: 500 µs)', True)
+
+
+def test_cpu_goal_is_on_the_listing_agent():
+    results = dict(_results(), cpu=_cpu(2500.0, quiet=100.0))
+    assert _goal(results, 'node CPU')[1] is False
+    results['cpu']['listing_5_4']['us_per_message'] = None
+    assert _goal(results, 'node CPU') == ('no messages heard', False)
+
+
+def test_reaction_goals_need_every_trigger_answered():
+    base = _results()
+    assert _goal(dict(base, reaction=_reaction(25.0, 40.0)), 'perception -> action p50')[1] is False
+    assert _goal(dict(base, reaction=_reaction(5.0, 120.0)), 'perception -> action p99')[1] is False
+    measured, met = _goal(dict(base, reaction=_reaction(5.0, 40.0, seen=49)), 'perception -> action p99')
+    assert not met and '49 of 50' in measured
+
+
+def test_wakeup_goal_is_on_the_slowest_and_on_every_stamp():
+    base = _results()
+    assert _goal(dict(base, behaviour=_behaviour(wakeup_max=499.0)), 'idle agent wakes up')[1] is True
+    assert _goal(dict(base, behaviour=_behaviour(wakeup_max=500.0)), 'idle agent wakes up')[1] is False
+    b = _behaviour()
+    b['wakeup']['wakeup_ms']['n'] = 2
+    assert _goal(dict(base, behaviour=b), 'idle agent wakes up') == ('only 2 of 3 seen', False)
+
+
+@pytest.mark.parametrize('limited, plain, met', [(4.8, 48.0, True), (5.0, 48.0, True), (5.3, 48.0, False),
+                                                 (None, 48.0, False), (4.8, 4.9, False)])
+def test_rate_limit_goal_needs_a_burst_above_the_limit(limited, plain, met):
+    results = dict(_results(), behaviour=_behaviour(limited=limited, plain=plain))
+    assert _goal(results, 'perception_rate=5')[1] is met
+
+
+def test_rate_limit_goal_matches_the_agents_project():
+    with open(os.path.join(os.path.dirname(__file__), '..', 'agents', 'rate_limit.mas2j')) as f:
+        text = f.read()
+    assert re.search(r'limited bench\.asl \[perception_rate=(\d+)\]', text).group(1) == str(report.RATE_LIMIT_PER_S)
+    assert re.search(r'^\s*plain bench\.asl;', text, re.M)
+
+
+def test_sim_goals_are_the_rostests_bounds():
+    base = _results()
+    verdicts = dict((g, met) for g, _, met in report.goals(dict(base, behaviour=_behaviour(rtf=0.95, vision=8.9))))
+    assert verdicts['simulator real-time factor at rate 1, both execution layers running > 0.95'] is False
+    assert verdicts['simulator: vision >= 9 Hz'] is False
+    assert verdicts['simulator: camera >= 9.5 Hz'] is True
+    b = _behaviour()
+    b['sim']['real_time_factor'] = None
+    assert _goal(dict(base, behaviour=b), 'simulator real-time factor') == ('no /clock', False)
+
+
+def test_markdown_has_the_new_sections_and_failed_parts():
+    results = dict(_results(), cpu=_cpu(800.0), reaction=_reaction(5.0, 40.0), behaviour=_behaviour(),
+                   errors={'behaviour.sim': 'RuntimeError: the vision synthesizer never published'},
+                   duration_s=100.4, durations_s={'cpu': 60.2, 'behaviour.sim': 30.0})
+    text = report.markdown(results)
+    for heading in ('## Node CPU time per perception message', '## Reaction: perception → action',
+                    '## Behaviour', '## Failed parts'):
+        assert heading in text
+    assert '| burst + 50 busy intentions | 50 of 50 | 5.00 | 40.00 | 40.00 | 40.00 |' in text
+    assert '| limited (`perception_rate=5`) | 15 | 4.80 | 200 |' in text
+    assert '| vision | 9.8 | ≥ 9 |' in text
+    assert 'behaviour.sim: RuntimeError' in text
+    assert 'Duration: 100 s in all; cpu 60 s, behaviour.sim 30 s.' in text

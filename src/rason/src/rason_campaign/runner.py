@@ -1,11 +1,15 @@
 """Running one campaign run: ``roslaunch rason faulty_helper.launch`` on a master of its
-own, with a wall-clock timeout after which the whole launch is stopped."""
+own, with a wall-clock timeout after which the whole launch is stopped.
+
+:class:`PrivateMaster` (a ``roscore`` on a free port, stopped by its PID) is also what
+``rason_bench`` starts its benchmarks on."""
 import json
 import os
 import signal
 import socket
 import subprocess
 import time
+import xmlrpc.client
 
 from rason_campaign.plan import launch_arguments
 
@@ -51,18 +55,124 @@ class RunRecord(object):
 
 
 def port_free(port):
-    """True when nothing listens on 127.0.0.1:port (a master left there would be reused
-    by roslaunch, mixing two runs)."""
+    """True when 127.0.0.1:port can be bound now (a master left there would be reused by
+    roslaunch, mixing two runs). Connections of a previous run still closing (TIME_WAIT) do
+    not count: the master binds with SO_REUSEADDR too."""
     with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
-        s.settimeout(0.5)
-        return s.connect_ex(('127.0.0.1', port)) != 0
+        s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        try:
+            s.bind(('127.0.0.1', port))
+        except OSError:
+            return False
+    return True
 
 
-def pick_port(base, span=50):
+def pick_port(base=None, span=50):
+    """The first free port in base .. base + span - 1, or, without base, one the system
+    chooses among its free ones.
+
+    :raises RuntimeError: none of the span is free
+    """
+    if base is None:
+        with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
+            s.bind(('127.0.0.1', 0))
+            return s.getsockname()[1]
     for port in range(base, base + span):
         if port_free(port):
             return port
     raise RuntimeError('no free port in %d..%d for a ROS master' % (base, base + span - 1))
+
+
+class _Transport(xmlrpc.client.Transport):
+    """XML-RPC over HTTP with a connect and read timeout."""
+
+    def __init__(self, timeout):
+        super(_Transport, self).__init__()
+        self._timeout = timeout
+
+    def make_connection(self, host):
+        conn = super(_Transport, self).make_connection(host)
+        conn.timeout = self._timeout
+        return conn
+
+
+def master_is_up(uri, timeout=0.5):
+    """True when a ROS master at ``uri`` answers ``getPid``."""
+    proxy = xmlrpc.client.ServerProxy(uri, transport=_Transport(timeout))
+    try:
+        return proxy.getPid('/rason_private_master')[0] == 1
+    except (OSError, xmlrpc.client.Error):
+        return False
+
+
+class PrivateMaster(object):
+    """A ``roscore`` of our own on a free port, in a session of its own, stopped by its PID.
+
+    :param log: file its output is appended to
+    :param port: the port; by default one the system says is free
+    :param command: what to run instead of ``roscore -p PORT`` (tests)
+    """
+
+    def __init__(self, log, port=None, command=None):
+        self.port = port or pick_port()
+        self.uri = 'http://127.0.0.1:%d' % self.port
+        self.log = log
+        self._command = list(command) if command else ['roscore', '-p', str(self.port)]
+        self._proc = None
+
+    def env(self, base=None):
+        """``base`` (default os.environ) with ROS_MASTER_URI set to this master."""
+        return dict(os.environ if base is None else base, ROS_MASTER_URI=self.uri)
+
+    def start(self, timeout=20.0):
+        """Start it and wait until it answers.
+
+        :raises RuntimeError: it ended or did not answer within ``timeout`` s (then stopped)
+        """
+        if master_is_up(self.uri):
+            raise RuntimeError('a ROS master already runs on port %d' % self.port)
+        with open(self.log, 'ab') as out:
+            self._proc = subprocess.Popen(self._command, env=self.env(), stdout=out,
+                                          stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
+                                          start_new_session=True)
+        deadline = time.monotonic() + timeout
+        while not master_is_up(self.uri):
+            if time.monotonic() > deadline or self._proc.poll() is not None:
+                self.stop()
+                raise RuntimeError('roscore on port %d did not start (see %s)' % (self.port, self.log))
+            time.sleep(0.1)
+        return self
+
+    def stop(self, grace=15.0):
+        """SIGINT (roscore then stops the master and rosout); SIGKILL to its process group
+        (its session: roscore and what it started) if it has not ended within ``grace`` s."""
+        proc, self._proc = self._proc, None
+        if proc is None or proc.poll() is not None:
+            return
+        proc.send_signal(signal.SIGINT)
+        try:
+            proc.wait(grace)
+        except subprocess.TimeoutExpired:  # still alive, so the group is still ours
+            _signal_group(proc.pid, signal.SIGKILL)
+            proc.wait(5.0)
+
+    @property
+    def running(self):
+        return self._proc is not None and self._proc.poll() is None
+
+    def __enter__(self):
+        return self.start()
+
+    def __exit__(self, *exc):
+        self.stop()
+
+
+def _signal_group(pgid, sig):
+    """Signal the process group we started (its own session), if anything of it is left."""
+    try:
+        os.killpg(pgid, sig)
+    except ProcessLookupError:
+        pass
 
 
 def _stop(proc, grace=20.0):
@@ -82,10 +192,7 @@ def _stop(proc, grace=20.0):
 
 def _stop_leftovers(pgid):
     """Anything of the launch's process group still alive after roslaunch ended."""
-    try:
-        os.killpg(pgid, signal.SIGTERM)
-    except ProcessLookupError:
-        pass
+    _signal_group(pgid, signal.SIGTERM)
 
 
 def _recover_bag(bag):
@@ -113,28 +220,28 @@ def run(spec, bag_dir, timeout, base_port=11611):
     for stale in (bag, bag + '.active'):
         if os.path.exists(stale):
             os.remove(stale)
-    port = pick_port(base_port)
-    env = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:%d' % port)
-    cmd = ['roslaunch', '-p', str(port)] + list(LAUNCH) + launch_arguments(spec, bag)
-    t0 = time.monotonic()
-    timed_out = False
+    cmd = ['roslaunch'] + list(LAUNCH) + launch_arguments(spec, bag)
     with open(log, 'w') as out:
         out.write(' '.join(cmd) + '\n')
-        out.flush()
-        proc = subprocess.Popen(cmd, stdout=out, stderr=subprocess.STDOUT, env=env,
-                                stdin=subprocess.DEVNULL, start_new_session=True)
-        try:
-            proc.wait(timeout)
-        except subprocess.TimeoutExpired:
-            timed_out = True
-            _stop(proc)
-        except KeyboardInterrupt:  # the launch is in a session of its own: stop it too
-            _stop(proc)
-            raise
-        else:
-            _stop_leftovers(proc.pid)
-    record = RunRecord(None if timed_out else proc.returncode, round(time.monotonic() - t0, 1),
-                       timed_out, bag, log)
+    timed_out = False
+    # roslaunch uses the master ROS_MASTER_URI names when one answers there
+    with PrivateMaster(log, pick_port(base_port)) as master:
+        t0 = time.monotonic()
+        with open(log, 'a') as out:
+            proc = subprocess.Popen(cmd, stdout=out, stderr=subprocess.STDOUT, env=master.env(),
+                                    stdin=subprocess.DEVNULL, start_new_session=True)
+            try:
+                proc.wait(timeout)
+            except subprocess.TimeoutExpired:
+                timed_out = True
+                _stop(proc)
+            except KeyboardInterrupt:  # the launch is in a session of its own: stop it too
+                _stop(proc)
+                raise
+            else:
+                _stop_leftovers(proc.pid)
+        wall = round(time.monotonic() - t0, 1)
+    record = RunRecord(None if timed_out else proc.returncode, wall, timed_out, bag, log)
     _recover_bag(bag)
     record.save(os.path.join(bag_dir, spec.name + '.run.json'))
     return record

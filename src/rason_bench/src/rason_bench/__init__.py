@@ -2,5 +2,7 @@
 
 Pure modules (no rospy): :mod:`stats`, :mod:`thesis`, :mod:`protocol`, :mod:`report`,
 :mod:`plots`. ROS adapters: :mod:`harness` (the controlling node), :mod:`procs`
-(starting the master and the nodes), :mod:`experiments`, and the ``bench_synth`` node.
+(starting the nodes, on the campaign's private master), :mod:`experiments` (the agents'
+node: cycle time, latencies, CPU per message, reaction, scale), :mod:`behaviour` (wake-up,
+rate limit, the simulator's rates), and the ``bench_synth`` node.
 """

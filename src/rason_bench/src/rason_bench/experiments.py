@@ -1,9 +1,14 @@
-"""The three benchmarks of ``make bench``, each against its own rason_mas process.
+"""The benchmarks of ``make bench`` on the agents' node, each against its own rason_mas process.
 
 1. :func:`cycle_tables`: thesis Tables 5.1/5.2, the Listing 5.4 loop under bursts from
    ``bench_synth``, per perception manager, with baselines (no traffic) in the same JVM.
 2. :func:`latencies`: action round trip and perception -> belief event, idle and under a burst.
-3. :func:`scale`: 1, 10, 100 agents in one process hearing 10 perceptions at 10 Hz.
+3. :func:`node_cpu_per_message`: the node's CPU time per perception message of a burst.
+4. :func:`reaction`: perception -> the agent's action, idle and under load (a burst and
+   busy intentions).
+5. :func:`scale`: 1, 10, 100 agents in one process hearing 10 perceptions at 10 Hz.
+
+The simulator's rates, wake-up and the rate limit are in :mod:`rason_bench.behaviour`.
 """
 import contextlib
 import os
@@ -129,7 +134,7 @@ def cycle_tables(procs, harness, modes, perceptions, rates, seconds, log, repeat
                     with Burst(procs, harness, p, r):
                         runs = [measured_cycle(mas, agent, iterations) for _ in range(repeats)]
                     after = measured_cycle(mas, agent, iterations)
-                    cell = median_run(runs)
+                    cell = stats.median_run(runs)
                     cell.update(perceptions=p, rate_hz=r, runs_ms=[x['ms'] for x in runs],
                                 baseline_ms=(before['ms'] + after['ms']) / 2.0,
                                 baseline_cpu_percent=(before['cpu_percent'] + after['cpu_percent']) / 2.0)
@@ -139,12 +144,6 @@ def cycle_tables(procs, harness, modes, perceptions, rates, seconds, log, repeat
                            cell['cpu_percent']))
         out[mode] = {'iterations': iterations, 'repeats': repeats, 'cells': cells}
     return out
-
-
-def median_run(runs):
-    """The run with the median time (an odd count gives a run that happened)."""
-    ordered = sorted(runs, key=lambda x: x['ms'])
-    return dict(ordered[len(ordered) // 2])
 
 
 def latencies(procs, harness, pings, stamps, stamp_period, log):
@@ -169,6 +168,80 @@ def latencies(procs, harness, pings, stamps, stamp_period, log):
                                              out[load]['perception_to_belief_ms']['p50'],
                                              out[load]['perception_to_belief_ms']['p99'], len(seen), stamps))
     return out
+
+
+def node_cpu_per_message(procs, harness, window, log, count=10, rate=50, windows=3, warm=5.0):
+    """CPU time (user + sys) of the rason_mas process per perception message of a ``count``
+    literals x ``rate`` Hz burst, less its idle CPU use: the median of ``windows`` windows of
+    ``window`` s, for the Listing 5.4 agent (a plan with a .print per literal) and for an
+    agent without perception plans (the bridge and the belief updates only). The messages are
+    those the harness heard from the burst meanwhile (the node subscribes to the same topic)."""
+    out = {}
+    for label, mas2j in (('listing_5_4', 'bench.mas2j'), ('no_plans', 'quiet.mas2j')):
+        with Mas(procs, harness, mas2j) as mas:
+            with Burst(procs, harness, count, rate):  # the JIT compiles the perception path
+                time.sleep(warm)
+            time.sleep(1.0)
+            idle = [_cpu_window(mas, harness, window)]
+            with Burst(procs, harness, count, rate):
+                runs = [_cpu_window(mas, harness, window) for _ in range(windows)]
+            time.sleep(1.0)
+            idle.append(_cpu_window(mas, harness, window))
+        idle_per_s = sum(r['cpu_s'] for r in idle) / sum(r['wall_s'] for r in idle)
+        for r in runs:
+            r['us_per_message'] = stats.cpu_per_message_us(r['cpu_s'], r['wall_s'], idle_per_s, r['messages'])
+        measured = [r['us_per_message'] for r in runs if r['us_per_message'] is not None]
+        row = {'literals_per_message': count, 'rate_hz': rate, 'window_s': window,
+               'idle_cpu_percent': 100.0 * idle_per_s, 'runs': runs,
+               'us_per_message': stats.median(measured) if measured else None,
+               'cpu_percent': 100.0 * sum(r['cpu_s'] for r in runs) / sum(r['wall_s'] for r in runs)}
+        out[label] = row
+        log('  %s: %s µs CPU per message (%d literals x %g Hz; node CPU %.0f%%, idle %.1f%%)'
+            % (label, '%.0f' % row['us_per_message'] if measured else 'no messages: no', count, rate,
+               row['cpu_percent'], row['idle_cpu_percent']))
+    return out
+
+
+def _cpu_window(mas, harness, seconds):
+    """CPU seconds of the node, wall seconds, and burst messages heard over ``seconds``."""
+    cpu0, heard0, t0 = mas.cpu_seconds(), harness.heard(BURST_SOURCE), time.monotonic()
+    time.sleep(seconds)
+    cpu1, heard1, t1 = mas.cpu_seconds(), harness.heard(BURST_SOURCE), time.monotonic()
+    return {'cpu_s': cpu1 - cpu0, 'wall_s': t1 - t0, 'messages': heard1 - heard0}
+
+
+def reaction(procs, harness, count, period, spinners, log):
+    """Perception -> action: the harness publishes trigger(Run, Seq, Stamp), the agent's plan
+    acts react(Run, Seq, Stamp) at once, the harness times its arrival (ms). Idle, and under
+    load: a 10 x 50 Hz burst and ``spinners`` busy intentions in the same agent."""
+    out = {}
+    with Mas(procs, harness, 'bench.mas2j') as mas:
+        agent = mas.agents[0]
+        harness.triggers(20, period, timeout=30.0)  # warm up
+        timeout = 60.0 + count * period
+        out['idle'] = _reaction_row(harness.triggers(count, period, timeout), count)
+        with Burst(procs, harness, 10, 50):
+            cpu0, t0 = mas.cpu_seconds(), time.monotonic()
+            run = harness.spin(agent, spinners)
+            samples = harness.triggers(count, period, timeout)
+            turns = harness.stop_spin(agent, run, spinners, timeout=60.0)
+            wall = time.monotonic() - t0
+            cpu = 100.0 * (mas.cpu_seconds() - cpu0) / wall
+        out['load'] = _reaction_row(samples, count)
+        out['load'].update(busy_intentions=spinners, burst='10 x 50 Hz', cpu_percent=cpu,
+                           busy_turns_per_s=sum(turns) / wall, busy_intentions_reported=len(turns))
+    for load in ('idle', 'load'):
+        s = out[load]['reaction_ms']
+        log('  %s: reaction p50 %.2f p99 %.2f ms (%d of %d triggers)'
+            % (load, s.get('p50', float('nan')), s.get('p99', float('nan')), s['n'], count))
+    log('  busy intentions: %d, %.0f turns/s in all; node CPU %.0f%%'
+        % (spinners, out['load']['busy_turns_per_s'], out['load']['cpu_percent']))
+    return out
+
+
+def _reaction_row(samples, sent):
+    return {'reaction_ms': stats.summarize(samples), 'triggers_sent': sent,
+            'reaction_samples': [round(x, 3) for x in samples]}
 
 
 def scale(procs, harness, counts, seconds, iterations, log):

@@ -33,6 +33,7 @@ class Harness(object):
     # ---- the decomposer of the agent's actions ----
 
     def _on_action(self, msg):
+        received_ms = time.monotonic() * 1000.0
         try:
             report = protocol.parse_report(msg.action, msg.parameters)
         except protocol.BadReport as e:
@@ -42,6 +43,8 @@ class Harness(object):
             return
         self._events.publish(Event(agent=msg.agent, event_type='action_feedback',
                                    parameters=['OK', str(msg.action_id)]))
+        if isinstance(report, protocol.Reacted):
+            report = protocol.reaction(report, received_ms)
         if report is not None:
             with self._cond:
                 self._reports.append(report)
@@ -63,20 +66,37 @@ class Harness(object):
                     raise Timeout('no %s within %.0f s' % (what, timeout))
                 self._cond.wait(min(left, 0.1))
 
-    def reports(self, kind, run, count, timeout, done=None):
-        """Wait for ``count`` reports of type ``kind`` for ``run`` (or, if given, one for which
-        ``done(report)`` holds); returns them in arrival order."""
+    def collect(self, kind, run, ready, timeout, what):
+        """Wait until ``ready(reports)`` holds for the reports of type ``kind`` for ``run``
+        (in arrival order); returns and forgets them."""
         def mine():
             return [r for r in self._reports if isinstance(r, kind) and r.run == run]
-
-        def ready():
-            found = mine()
-            return len(found) >= count or (done is not None and any(done(r) for r in found))
-        self._wait(ready, timeout, '%d %s reports for run %d' % (count, kind.__name__, run))
+        self._wait(lambda: ready(mine()), timeout, '%s for run %d' % (what, run))
         with self._cond:
             found = mine()
             self._reports = [r for r in self._reports if not (isinstance(r, kind) and r.run == run)]
         return found
+
+    def reports(self, kind, run, count, timeout, done=None, grace=0.0):
+        """Wait for ``count`` reports of type ``kind`` for ``run`` (or, if given, one for which
+        ``done(report)`` holds and then ``grace`` s more for the rest); returns them in arrival
+        order."""
+        done_at = []
+
+        def ready(found):
+            if len(found) >= count:
+                return True
+            if done is None:
+                return False
+            if not done_at and any(done(r) for r in found):
+                done_at.append(time.monotonic())
+            return bool(done_at) and time.monotonic() >= done_at[0] + grace
+        return self.collect(kind, run, ready, timeout, '%d %s reports' % (count, kind.__name__))
+
+    def heard(self, source):
+        """How many messages of ``source`` this node has heard on jason/perception."""
+        with self._cond:
+            return self._heard.get(source, 0)
 
     def wait_heard(self, source, count=1, timeout=20.0):
         """Wait until ``count`` more messages of ``source`` have been heard."""
@@ -115,15 +135,55 @@ class Harness(object):
         self.control(protocol.go_ping(agent, run, count))
         return [r.ms for r in self.reports(protocol.RoundTrip, run, count, timeout)]
 
+    def _publish_series(self, source, literal, count, period):
+        """Publish ``literal(run, seq, now_ms)`` from ``source`` (a name, or a function of seq),
+        seq 0 .. count - 1, one every ``period`` s on the wall clock; the run."""
+        run = self.next_run()
+        source_of = source if callable(source) else (lambda _seq: source)
+        next_time = time.monotonic()
+        for seq in range(count):
+            now_ms = time.monotonic() * 1000.0
+            self._perceptions.publish(Perception(source=source_of(seq), perception=[literal(run, seq, now_ms)]))
+            next_time += period
+            time.sleep(max(0.0, next_time - time.monotonic()))
+        return run
+
     def stamps(self, count, period, timeout):
         """Publish ``count`` stamp percepts, one every ``period`` s; ms from publish to the agent's
         plan, for each stamp the agent saw (with per-source replacement, a stamp overtaken by the
         next one before the agent perceived is never seen, by design)."""
-        run = self.next_run()
-        for seq in range(count):
-            now_ms = time.monotonic() * 1000.0
-            self._perceptions.publish(Perception(source=protocol.STAMP_SOURCE,
-                                                 perception=[protocol.stamp(run, seq, now_ms)]))
-            time.sleep(period)
+        run = self._publish_series(protocol.STAMP_SOURCE, protocol.stamp, count, period)
         last = count - 1
         return [r.ms for r in self.reports(protocol.Seen, run, count, timeout, done=lambda r: r.seq == last)]
+
+    def triggers(self, count, period, timeout):
+        """Publish ``count`` trigger percepts, one every ``period`` s (sources in turn:
+        :func:`protocol.trigger_source`); ms from publish to the agent's ``react`` action
+        arriving here, for each trigger it reacted to."""
+        run = self._publish_series(protocol.trigger_source, protocol.trigger, count, period)
+        last = count - 1
+        return [r.ms for r in self.reports(protocol.Reaction, run, count, timeout, done=lambda r: r.seq == last,
+                                           grace=1.0)]
+
+    def spin(self, agent, count, timeout=30.0):
+        """``agent`` starts ``count`` busy intentions; the run (for :meth:`stop_spin`)."""
+        run = self.next_run()
+        self.control(protocol.go_spin(agent, run, count))
+        self.reports(protocol.Spinning, run, 1, timeout)
+        return run
+
+    def stop_spin(self, agent, run, count, timeout=30.0):
+        """End the busy intentions of ``run``; the turns each made."""
+        self.control(protocol.stop_spin(agent, run))
+        return [r.turns for r in self.reports(protocol.Spun, run, count, timeout)]
+
+    def ticks(self, agents, count, period, timeout):
+        """Publish tick(Run, Seq), seq 0 .. count - 1, one every ``period`` s, from one source;
+        once every agent of ``agents`` has had the last one, {agent: [its Ticked in order]}."""
+        run = self._publish_series(protocol.TICK_SOURCE, lambda r, q, _now: protocol.tick(r, q), count, period)
+        last = count - 1
+
+        def ready(found):
+            return set(agents) <= {r.agent for r in found if r.seq == last}
+        found = self.collect(protocol.Ticked, run, ready, timeout, 'the last tick at %s' % ', '.join(agents))
+        return {a: [r for r in found if r.agent == a] for a in agents}

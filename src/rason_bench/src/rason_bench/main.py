@@ -2,7 +2,8 @@
 their own and writes ``report.md``, ``results.json`` and PNG plots.
 
 Options: ``--seconds`` (length of one measured run, default 1), ``--quick`` (a subset of
-cells, for a smoke run), ``--only`` (cycle, latency, scale), ``--out`` (directory).
+cells, fewer samples, for a smoke run), ``--only`` (cycle, latency, cpu, reaction, scale,
+behaviour; repeatable), ``--out`` (directory).
 """
 import argparse
 import datetime
@@ -15,12 +16,15 @@ import time
 
 from rason_bench import plots, report, thesis
 
+#: The parts of a run, in the order they run (behaviour last: it starts the simulator).
+PARTS = ('cycle', 'latency', 'cpu', 'reaction', 'scale', 'behaviour')
+
 
 def _parse(argv):
     ap = argparse.ArgumentParser(prog='run_bench', description=__doc__.split('\n\n')[0])
     ap.add_argument('--seconds', type=float, default=1.0, help='length of one measured run (s)')
     ap.add_argument('--quick', action='store_true', help='perceptions {1, 10} x {1, 50} Hz, fewer samples')
-    ap.add_argument('--only', action='append', choices=('cycle', 'latency', 'scale'),
+    ap.add_argument('--only', action='append', choices=PARTS,
                     help='run only these parts (repeatable)')
     ap.add_argument('--out', default='results/bench', help='output directory')
     return ap.parse_args(argv)
@@ -44,15 +48,20 @@ def machine_facts():
 
 def main(argv=None):
     args = _parse(sys.argv[1:] if argv is None else argv)
-    parts = args.only or ['cycle', 'latency', 'scale']
+    parts = [p for p in PARTS if p in (args.only or PARTS)]
     out_dir = os.path.abspath(args.out)
     os.makedirs(out_dir, exist_ok=True)
     perceptions = (1, 10) if args.quick else thesis.PERCEPTIONS
     rates = (1, 50) if args.quick else thesis.RATES_HZ
     pings, stamps = (100, 50) if args.quick else (1000, 300)
+    wakeups, sim_window = (3, 5.0) if args.quick else (5, 10.0)
     results = {'machine': machine_facts(),
                'params': {'seconds': args.seconds, 'perceptions': list(perceptions), 'rates_hz': list(rates),
-                          'pings': pings, 'stamps': stamps, 'stamp_period_s': 0.02, 'quick': args.quick}}
+                          'pings': pings, 'stamps': stamps, 'stamp_period_s': 0.02, 'quick': args.quick,
+                          'cpu_window_s': 5 * args.seconds, 'triggers': stamps,
+                          'busy_intentions': report.BUSY_INTENTIONS, 'wakeups': wakeups, 'wakeup_gap_s': 2.0,
+                          'sim_window_s': sim_window, 'rate_limit_seconds': 3.0, 'rate_limit_sent_hz': 50.0,
+                          'parts': parts}}
 
     def log(line):
         print(line, flush=True)
@@ -64,33 +73,67 @@ def main(argv=None):
     os.environ['ROS_MASTER_URI'] = procs.master_uri
     procs.start_master()
     started = time.monotonic()
+    failed = []
     try:
         import rospy
-        from rason_bench import experiments
+        from rason_bench import behaviour, experiments
         from rason_bench.harness import Harness
         rospy.init_node('rason_bench', disable_signals=True)
         harness = Harness()
-        if 'cycle' in parts:
-            results['cycle'] = experiments.cycle_tables(procs, harness, ('accumulate', 'per_source'),
-                                                        perceptions, rates, args.seconds, log)
-        if 'latency' in parts:
-            log('latencies')
-            results['latency'] = experiments.latencies(procs, harness, pings, stamps, 0.02, log)
-        if 'scale' in parts:
-            log('scale')
-            iterations = results['cycle']['per_source']['iterations'] if 'cycle' in results else 20000
-            results['scale'] = experiments.scale(procs, harness, (1, 10, 100), args.seconds, iterations, log)
+        p = results['params']
+
+        def scale():
+            iterations = results['cycle']['per_source']['iterations'] if 'per_source' in results.get('cycle', {}) else 20000
+            return experiments.scale(procs, harness, (1, 10, 100), args.seconds, iterations, log)
+        steps = {
+            'cycle': [('cycle', None, lambda: experiments.cycle_tables(
+                procs, harness, ('accumulate', 'per_source'), perceptions, rates, args.seconds, log))],
+            'latency': [('latency', 'latencies', lambda: experiments.latencies(procs, harness, pings, stamps, 0.02, log))],
+            'cpu': [('cpu', 'node CPU time per perception message', lambda: experiments.node_cpu_per_message(
+                procs, harness, p['cpu_window_s'], log))],
+            'reaction': [('reaction', 'reaction: perception -> action', lambda: experiments.reaction(
+                procs, harness, p['triggers'], 0.02, p['busy_intentions'], log))],
+            'scale': [('scale', 'scale', scale)],
+            'behaviour': [
+                ('behaviour.wakeup', 'behaviour: idle wake-up', lambda: behaviour.wakeup(
+                    procs, harness, wakeups, p['wakeup_gap_s'], log)),
+                ('behaviour.rate_limit', 'behaviour: perception rate limit', lambda: behaviour.rate_limit(
+                    procs, harness, p['rate_limit_seconds'], p['rate_limit_sent_hz'], log)),
+                ('behaviour.sim', 'behaviour: simulator rates (two_robots.launch)', lambda: behaviour.sim_rates(
+                    procs, sim_window, log))]}
+        for part in parts:
+            for key, title, measure in steps[part]:
+                if title:
+                    log(title)
+                t0 = time.monotonic()
+                try:
+                    value = measure()
+                except Exception as e:  # the other parts still run and are written
+                    failed.append(key)
+                    results.setdefault('errors', {})[key] = '%s: %s' % (type(e).__name__, e)
+                    log('  FAILED: %s: %s' % (type(e).__name__, e))
+                    continue
+                finally:
+                    results.setdefault('durations_s', {})[key] = round(time.monotonic() - t0, 1)
+                section, _, sub = key.partition('.')
+                if sub:
+                    results.setdefault(section, {})[sub] = value
+                else:
+                    results[section] = value
     finally:
         procs.stop_master()
     results['duration_s'] = round(time.monotonic() - started, 1)
     write(results, out_dir)
     for goal, measured, met in report.goals(results):
         log('%-70s %-40s %s' % (goal, measured, 'met' if met else 'NOT MET'))
-    log('wrote %s/report.md (%.0f s)' % (out_dir, results['duration_s']))
-    return 0
+    log('wrote %s/report.md (%.0f s)%s' % (out_dir, results['duration_s'],
+                                            '; FAILED: ' + ', '.join(failed) if failed else ''))
+    return 1 if failed else 0
 
 
 def write(results, out_dir):
+    results['goals'] = [{'goal': goal, 'measured': measured, 'met': met}
+                        for goal, measured, met in report.goals(results)]
     with open(os.path.join(out_dir, 'results.json'), 'w') as f:
         json.dump(results, f, indent=1, sort_keys=True)
     if 'cycle' in results:
@@ -99,5 +142,7 @@ def write(results, out_dir):
         plots.latency_plot(results['latency'], os.path.join(out_dir, 'latency.png'))
     if 'scale' in results:
         plots.scale_plot(results['scale'], os.path.join(out_dir, 'scale.png'))
+    if 'reaction' in results:
+        plots.reaction_plot(results['reaction'], os.path.join(out_dir, 'reaction.png'))
     with open(os.path.join(out_dir, 'report.md'), 'w') as f:
         f.write(report.markdown(results))

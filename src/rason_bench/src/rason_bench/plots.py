@@ -78,3 +78,22 @@ def scale_plot(rows, path):
     plt.close(fig)
 
 
+
+
+def reaction_plot(reaction, path):
+    """Cumulative distributions of perception -> action, idle and under load."""
+    fig, ax = plt.subplots(figsize=(5, 3.4))
+    for load, style, label in (('idle', '-', 'idle'), ('load', '--', 'burst + busy intentions')):
+        samples = sorted(reaction.get(load, {}).get('reaction_samples', []))
+        if samples:
+            ax.plot(samples, [(i + 1) / len(samples) for i in range(len(samples))], style, label=label)
+    ax.axvline(report.REACTION_P99_GOAL_MS, color='grey', lw=0.8, ls=':')
+    ax.set_xscale('log')
+    ax.set_xlabel('ms')
+    ax.set_ylabel('fraction')
+    ax.set_title('perception → action')
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=_DPI)
+    plt.close(fig)

@@ -1,29 +1,11 @@
-"""Starting and stopping the benchmark's own ROS master and nodes (subprocesses, stopped by PID)."""
+"""Starting and stopping the benchmark's own ROS master and nodes (subprocesses, stopped by
+PID). The master is the campaign's :class:`rason_campaign.runner.PrivateMaster` (package
+``rason``): one implementation of "a roscore of our own on a free port"."""
 import os
 import signal
-import socket
 import subprocess
-import time
 
-
-def free_port():
-    """A TCP port nobody listens on right now."""
-    with socket.socket() as s:
-        s.bind(('127.0.0.1', 0))
-        return s.getsockname()[1]
-
-
-def master_is_up(uri, timeout=0.5):
-    import xmlrpc.client
-    try:
-        proxy = xmlrpc.client.ServerProxy(uri)
-        socket.setdefaulttimeout(timeout)
-        try:
-            return proxy.getPid('/rason_bench')[0] == 1
-        finally:
-            socket.setdefaulttimeout(None)
-    except (OSError, xmlrpc.client.Error):
-        return False
+from rason_campaign.runner import PrivateMaster
 
 
 class Processes(object):
@@ -33,30 +15,25 @@ class Processes(object):
     """
 
     def __init__(self, log_dir, port=None):
-        self.port = port or free_port()
-        self.master_uri = 'http://127.0.0.1:%d' % self.port
-        self.log_dir = log_dir
         os.makedirs(log_dir, exist_ok=True)
-        self.env = dict(os.environ, ROS_MASTER_URI=self.master_uri, ROS_IP='127.0.0.1')
-        self._master = None
+        self.log_dir = log_dir
+        self.master = PrivateMaster(os.path.join(log_dir, 'roscore.log'), port)
+        self.port = self.master.port
+        self.master_uri = self.master.uri
+        self.env = self.master.env(dict(os.environ, ROS_IP='127.0.0.1'))
 
     def start_master(self, timeout=20.0):
-        self._master = self.start('roscore', ['roscore', '-p', str(self.port)])
-        deadline = time.monotonic() + timeout
-        while not master_is_up(self.master_uri):
-            if time.monotonic() > deadline or self._master.poll() is not None:
-                raise RuntimeError('roscore on port %d did not start (see %s/roscore.log)'
-                                   % (self.port, self.log_dir))
-            time.sleep(0.1)
+        self.master.start(timeout)
+
+    def stop_master(self):
+        self.master.stop()
 
     def start(self, name, argv):
-        """Start argv with the run's environment; output to ``<log_dir>/<name>.log``."""
-        out = open(os.path.join(self.log_dir, name + '.log'), 'ab')
-        try:
+        """Start argv with the run's environment, in a session of its own; output to
+        ``<log_dir>/<name>.log``."""
+        with open(os.path.join(self.log_dir, name + '.log'), 'ab') as out:
             return subprocess.Popen(argv, env=self.env, stdout=out, stderr=subprocess.STDOUT,
-                                    start_new_session=True)
-        finally:
-            out.close()
+                                    stdin=subprocess.DEVNULL, start_new_session=True)
 
     def rosrun(self, name, package, executable, *args, **params):
         """``rosrun package executable args __name:=name _param:=value ...`` (rosrun execs: the PID is the node's)."""
@@ -64,18 +41,20 @@ class Processes(object):
         argv += ['_%s:=%s' % (k, v) for k, v in sorted(params.items())]
         return self.start(name, argv)
 
+    def roslaunch(self, name, package, launch_file, *args):
+        """``roslaunch package launch_file arg:=value ...`` on the run's master; stop it with
+        :meth:`stop` and ``signal.SIGINT`` (roslaunch then stops its nodes)."""
+        return self.start(name, ['roslaunch', package, launch_file] + list(args))
+
     @staticmethod
     def stop(proc, sig=signal.SIGTERM, timeout=15.0):
-        """Signal one process we started (by its PID) and wait; SIGKILL if it does not end."""
+        """Signal one process we started (by its PID) and wait; if it does not end, SIGKILL
+        to its process group (the session it was started in: only what it started)."""
         if proc is None or proc.poll() is not None:
             return
         proc.send_signal(sig)
         try:
             proc.wait(timeout)
-        except subprocess.TimeoutExpired:
-            proc.kill()
+        except subprocess.TimeoutExpired:  # still alive, so the group is still ours
+            os.killpg(proc.pid, signal.SIGKILL)
             proc.wait(5)
-
-    def stop_master(self):
-        self.stop(self._master, signal.SIGINT)
-        self._master = None

@@ -4,6 +4,7 @@ The harness starts a measurement with a control percept; the agent answers with
 actions whose parameters carry the results (the harness is their decomposer and
 acknowledges each with ``OK``). Action parameters arrive as text, numbers plainly.
 """
+import math
 from collections import namedtuple
 
 #: ``cycle(Run, Iterations, Ms)``: the thesis loop of Listing 5.4 ran Iterations times in Ms.
@@ -13,13 +14,32 @@ RoundTrip = namedtuple('RoundTrip', 'run index ms')
 #: ``seen(Run, Seq, Ms)``: the percept stamp(Run, Seq, T) reached a plan Ms after T.
 Seen = namedtuple('Seen', 'run seq ms')
 
+#: ``react(Run, Seq, Stamp)``: the agent's action for the percept trigger(Run, Seq, Stamp);
+#: the harness times it on arrival (:func:`reaction`).
+Reacted = namedtuple('Reacted', 'run seq stamp_ms')
+#: Publish -> action arrival of one trigger, in ms (made by the harness from a Reacted).
+Reaction = namedtuple('Reaction', 'run seq ms')
+#: ``spinning(Run, N)``: the agent started N busy intentions.
+Spinning = namedtuple('Spinning', 'run count')
+#: ``spun(Run, I, K)``: busy intention I ended after K turns.
+Spun = namedtuple('Spun', 'run index turns')
+#: ``ticked(Run, Agent, Seq, Ms)``: the update tick(Run, Seq) reached Agent's plan at Ms
+#: (the agent's rason.time_ms).
+Ticked = namedtuple('Ticked', 'run agent seq ms')
+
 _REPORTS = {'cycle': (Cycle, (int, int, float)), 'rtt': (RoundTrip, (int, int, float)),
-            'seen': (Seen, (int, int, float))}
+            'seen': (Seen, (int, int, float)), 'react': (Reacted, (int, int, float)),
+            'spinning': (Spinning, (int, int)), 'spun': (Spun, (int, int, int)),
+            'ticked': (Ticked, (int, str, int, float))}
 
 #: Source of the harness's control percepts.
 CONTROL_SOURCE = 'bench_control'
 #: Source of the latency stamps.
 STAMP_SOURCE = 'bench_stamp'
+#: Sources of the reaction triggers, taken in turn (:func:`trigger_source`).
+TRIGGER_SOURCES = 10
+#: Source of the rate-limit ticks.
+TICK_SOURCE = 'bench_tick'
 
 
 class BadReport(ValueError):
@@ -27,7 +47,7 @@ class BadReport(ValueError):
 
 
 def parse_report(action, parameters):
-    """A report action as a Cycle, RoundTrip or Seen; None for actions that are not reports.
+    """A report action as one of the tuples above; None for actions that are not reports.
 
     :raises BadReport: a report with the wrong number or kind of parameters
     """
@@ -38,9 +58,21 @@ def parse_report(action, parameters):
     if len(parameters) != len(types):
         raise BadReport('%s needs %d parameters, got %r' % (action, len(types), list(parameters)))
     try:
-        return cls(*[t(float(p)) if t is int else t(p) for t, p in zip(types, parameters)])
+        return cls(*[_int(p) if t is int else t(p) for t, p in zip(types, parameters)])
     except ValueError:
         raise BadReport('%s: parameters %r are not numbers' % (action, list(parameters)))
+
+
+def _int(text):
+    value = float(text)
+    if not math.isfinite(value) or value != int(value):
+        raise ValueError(text)
+    return int(value)
+
+
+def reaction(reacted, received_ms):
+    """The Reaction of a Reacted that arrived at ``received_ms`` (same clock as its stamp)."""
+    return Reaction(reacted.run, reacted.seq, received_ms - reacted.stamp_ms)
 
 
 def go_cycle(agent, run, iterations):
@@ -51,6 +83,34 @@ def go_cycle(agent, run, iterations):
 def go_ping(agent, run, count):
     """Control percept: ``agent`` acts ``ping`` ``count`` times, reporting each round trip."""
     return 'go_ping(%s,%d,%d)' % (agent, run, count)
+
+
+def go_spin(agent, run, count):
+    """Control percept: ``agent`` starts ``count`` busy intentions; they turn while it lasts
+    (the next control percept replaces it) and then report ``spun``."""
+    return 'go_spin(%s,%d,%d)' % (agent, run, count)
+
+
+def stop_spin(agent, run):
+    """Control percept replacing go_spin: the busy intentions end."""
+    return 'stop_spin(%s,%d)' % (agent, run)
+
+
+def trigger(run, seq, now_ms):
+    """Reaction percept, published at ``now_ms``: the agent acts ``react`` for it at once."""
+    return 'trigger(%d,%d,%.3f)' % (run, seq, now_ms)
+
+
+def trigger_source(seq):
+    """The source of trigger ``seq``: one of TRIGGER_SOURCES in turn, so that with per-source
+    replacement a trigger is replaced only TRIGGER_SOURCES triggers later. A late agent then
+    shows as a late reaction, not as a trigger it never perceived."""
+    return 'bench_trigger_%d' % (seq % TRIGGER_SOURCES)
+
+
+def tick(run, seq):
+    """Rate-limit percept: the agents report each update that reaches them."""
+    return 'tick(%d,%d)' % (run, seq)
 
 
 def stamp(run, seq, now_ms):

@@ -6,6 +6,22 @@ CYCLE_RATIO_GOAL = 1.2
 RTT_P50_GOAL_MS = 2.0
 RTT_P99_GOAL_MS = 10.0
 SEEN_P50_GOAL_MS = 5.0
+#: Node CPU time per perception message of a 10 literals x 50 Hz burst, Listing 5.4 agent:
+#: such a burst takes at most 10 % of one core.
+CPU_PER_MESSAGE_GOAL_US = 2000.0
+#: Perception -> action under load (a 10 x 50 Hz burst and BUSY_INTENTIONS busy intentions):
+#: p50 within one odometry period (50 Hz), p99 within one camera frame (10 Hz).
+REACTION_P50_GOAL_MS = 20.0
+REACTION_P99_GOAL_MS = 100.0
+BUSY_INTENTIONS = 50
+#: An idle agent's plan for a perception, every sample (the bridge_perception rostest's bound).
+WAKEUP_GOAL_MS = 500.0
+#: perception_rate of the limited agent in agents/rate_limit.mas2j (updates per second).
+RATE_LIMIT_PER_S = 5
+#: The simulator at rate 1 with both execution layers (the sim_rates rostest's bounds):
+#: real-time factor above SIM_RTF_GOAL, each topic at least its rate.
+SIM_RTF_GOAL = 0.95
+SIM_RATE_GOALS_HZ = (('faulty odom', 48.0), ('helper odom', 48.0), ('camera', 9.5), ('vision', 9.0))
 
 
 def baseline_ms(mode_result):
@@ -54,6 +70,87 @@ def goals(results):
                     rtt['p99'] <= RTT_P99_GOAL_MS))
         out.append(('perception -> belief p50 <= %g ms' % SEEN_P50_GOAL_MS, '%.2f ms' % seen['p50'],
                     seen['p50'] <= SEEN_P50_GOAL_MS))
+    out += _cpu_goals(results.get('cpu', {}))
+    out += _reaction_goals(results.get('reaction', {}))
+    behaviour = results.get('behaviour', {})
+    out += _wakeup_goals(behaviour.get('wakeup'))
+    out += _rate_limit_goals(behaviour.get('rate_limit'))
+    out += _sim_goals(behaviour.get('sim'))
+    return out
+
+
+def _cpu_goals(cpu):
+    row = cpu.get('listing_5_4')
+    if not row:
+        return []
+    us = row['us_per_message']
+    goal = ('node CPU per perception message (%d literals x %g Hz, Listing 5.4 agent) <= %g µs'
+            % (row['literals_per_message'], row['rate_hz'], CPU_PER_MESSAGE_GOAL_US))
+    if us is None:
+        return [(goal, 'no messages heard', False)]
+    quiet = cpu.get('no_plans', {}).get('us_per_message')
+    return [(goal, '%.0f µs%s' % (us, ' (without perception plans: %.0f µs)' % quiet if quiet is not None else ''),
+             us <= CPU_PER_MESSAGE_GOAL_US)]
+
+
+def _reaction_goals(reaction):
+    load = reaction.get('load')
+    if not load:
+        return []
+    s = load['reaction_ms']
+    where = 'under load (10 x 50 Hz burst, %d busy intentions)' % load.get('busy_intentions', BUSY_INTENTIONS)
+    if not s['n']:
+        return [('perception -> action %s' % where, 'no reaction', False)]
+    seen = '' if s['n'] == load['triggers_sent'] else ' (%d of %d triggers)' % (s['n'], load['triggers_sent'])
+    return [('perception -> action p50 %s <= %g ms' % (where, REACTION_P50_GOAL_MS), '%.2f ms%s' % (s['p50'], seen),
+             s['p50'] <= REACTION_P50_GOAL_MS and s['n'] == load['triggers_sent']),
+            ('perception -> action p99 %s <= %g ms' % (where, REACTION_P99_GOAL_MS), '%.2f ms%s' % (s['p99'], seen),
+             s['p99'] <= REACTION_P99_GOAL_MS and s['n'] == load['triggers_sent'])]
+
+
+def _wakeup_goals(wakeup):
+    if not wakeup:
+        return []
+    s = wakeup['wakeup_ms']
+    goal = 'idle agent wakes up: perception -> plan < %g ms, every one of %d (%g s apart)' % (
+        WAKEUP_GOAL_MS, wakeup['stamps_sent'], wakeup['gap_s'])
+    if s['n'] < wakeup['stamps_sent']:
+        return [(goal, 'only %d of %d seen' % (s['n'], wakeup['stamps_sent']), False)]
+    return [(goal, 'max %.1f ms' % s['max'], s['max'] < WAKEUP_GOAL_MS)]
+
+
+def rate_limit_verdict(rate_limit):
+    """(measured text, met): the limited agent got at most RATE_LIMIT_PER_S updates a second
+    (and at least two), while the plain one got more than that (the burst did exceed it)."""
+    agents = rate_limit['agents']
+    limited, plain = agents.get('limited', {}), agents.get('plain', {})
+    per_s, plain_per_s = limited.get('per_s'), plain.get('per_s')
+    text = 'limited %s/s (%d updates), plain %s/s (%d) of %d sent at %g Hz' % (
+        '%.2f' % per_s if per_s is not None else '-', limited.get('n', 0),
+        '%.1f' % plain_per_s if plain_per_s is not None else '-', plain.get('n', 0),
+        rate_limit['sent'], rate_limit['sent_hz'])
+    met = (per_s is not None and per_s <= RATE_LIMIT_PER_S
+           and plain_per_s is not None and plain_per_s > RATE_LIMIT_PER_S)
+    return text, met
+
+
+def _rate_limit_goals(rate_limit):
+    if not rate_limit:
+        return []
+    text, met = rate_limit_verdict(rate_limit)
+    return [('perception_rate=%d: updates reaching the agent during a burst <= %d/s'
+             % (RATE_LIMIT_PER_S, RATE_LIMIT_PER_S), text, met)]
+
+
+def _sim_goals(sim):
+    if not sim:
+        return []
+    rtf = sim['real_time_factor']
+    out = [('simulator real-time factor at rate 1, both execution layers running > %g' % SIM_RTF_GOAL,
+            '%.3f' % rtf if rtf is not None else 'no /clock', rtf is not None and rtf > SIM_RTF_GOAL)]
+    for name, goal in SIM_RATE_GOALS_HZ:
+        hz = sim['rates_hz'].get(name, 0.0)
+        out.append(('simulator: %s >= %g Hz' % (name, goal), '%.1f Hz' % hz, hz >= goal))
     return out
 
 
@@ -114,6 +211,72 @@ def scale_table(rows):
     return '\n'.join(lines) + '\n'
 
 
+def cpu_table(cpu):
+    lines = [_row(['agent', 'µs CPU per message', 'node CPU % (idle)', 'messages', 'µs per window']),
+             _row(['---'] * 5)]
+    labels = {'listing_5_4': 'Listing 5.4 (a plan with `.print` per literal)',
+              'no_plans': 'no perception plans'}
+    for key in ('listing_5_4', 'no_plans'):
+        r = cpu.get(key)
+        if not r:
+            continue
+        lines.append(_row([labels[key], '%.0f' % r['us_per_message'] if r['us_per_message'] is not None else '–',
+                           '%.0f (%.1f)' % (r['cpu_percent'], r['idle_cpu_percent']),
+                           '%d' % sum(w['messages'] for w in r['runs']),
+                           ', '.join('%.0f' % w['us_per_message'] for w in r['runs'] if w['us_per_message'] is not None)]))
+    return '\n'.join(lines) + '\n'
+
+
+def reaction_table(reaction):
+    lines = [_row(['', 'n', 'p50 ms', 'p90 ms', 'p99 ms', 'max ms']), _row(['---'] * 6)]
+    for load, label in (('idle', 'idle'), ('load', 'burst + %d busy intentions' % BUSY_INTENTIONS)):
+        if load not in reaction:
+            continue
+        s = reaction[load]['reaction_ms']
+        lines.append(_row([label, '%d of %d' % (s['n'], reaction[load]['triggers_sent'])] +
+                          (['%.2f' % s[k] for k in ('p50', 'p90', 'p99', 'max')] if s['n'] else [''] * 4)))
+    load = reaction.get('load')
+    extra = ''
+    if load and 'busy_turns_per_s' in load:
+        extra = ('\nUnder load the busy intentions made %.0f turns a second in all (%d reported) and the node '
+                 'used %.0f %% of a core.\n' % (load['busy_turns_per_s'], load['busy_intentions_reported'],
+                                                 load['cpu_percent']))
+    return '\n'.join(lines) + '\n' + extra
+
+
+def behaviour_text(behaviour):
+    out = []
+    w = behaviour.get('wakeup')
+    if w:
+        s = w['wakeup_ms']
+        out += ['Idle wake-up: %d stamped percepts %g s apart (an idle agent sleeps up to 1 s), '
+                'publish → plan: %s.' % (w['stamps_sent'], w['gap_s'],
+                                        'p50 %.1f ms, max %.1f ms (%d seen)' % (s['p50'], s['max'], s['n'])
+                                        if s['n'] else 'none seen'), '']
+    r = behaviour.get('rate_limit')
+    if r:
+        out += ['Perception rate limit: %d `tick` updates at %g Hz from one source to two agents of one node '
+                '(agents/rate_limit.mas2j):' % (r['sent'], r['sent_hz']), '',
+                _row(['agent', 'updates', 'per s (first to last)', 'shortest interval ms']), _row(['---'] * 4)]
+        for name in sorted(r['agents']):
+            a = r['agents'][name]
+            out.append(_row([name + (' (`perception_rate=%d`)' % RATE_LIMIT_PER_S if name == 'limited' else ''),
+                             '%d' % a['n'], '%.2f' % a['per_s'] if a['per_s'] is not None else '–',
+                             '%.0f' % a['min_interval_ms'] if a['min_interval_ms'] is not None else '–']))
+        out.append('')
+    sim = behaviour.get('sim')
+    if sim:
+        rtf = sim['real_time_factor']
+        out += ['Simulator at rate 1 with both robots\' execution layers (`two_robots.launch`, as the sim_rates '
+                'rostest), over %g wall s after the vision synthesizer published and %g s more: real-time factor %s.'
+                % (sim['window_s'], sim['settle_s'], '%.3f' % rtf if rtf is not None else 'unknown'), '',
+                _row(['topic', 'Hz', 'goal Hz']), _row(['---'] * 3)]
+        for name, goal in SIM_RATE_GOALS_HZ:
+            out.append(_row([name, '%.1f' % sim['rates_hz'].get(name, 0.0), '≥ %g' % goal]))
+        out.append('')
+    return '\n'.join(out) + '\n'
+
+
 def goals_table(results):
     lines = [_row(['goal', 'measured', 'met']), _row(['---'] * 3)]
     for goal, measured, met in goals(results):
@@ -146,7 +309,27 @@ def markdown(results):
                 'belief: a percept stamped when published → the agent\'s plan for its `+` event '
                 'chosen (same monotonic clock). "burst": while 10 perceptions × 50 Hz arrive.', '',
                 latency_table(results['latency'])]
+    if 'cpu' in results:
+        out += ['## Node CPU time per perception message', '',
+                'CPU time (user + sys) of the rason_mas process while `bench_synth` publishes 10 literals × 50 Hz, '
+                'less its idle CPU use, over the burst messages heard meanwhile; the median of 3 windows of %g s.'
+                % results['params'].get('cpu_window_s', 3), '', cpu_table(results['cpu'])]
+    if 'reaction' in results:
+        out += ['## Reaction: perception → action', '',
+                'The harness publishes `trigger(Run, Seq, Stamp)`; the agent\'s plan for it acts `react(Run, Seq, Stamp)` '
+                'at once; the harness times the action\'s arrival on `jason/action` (same monotonic clock). '
+                'Under load the same agent handles a 10 × 50 Hz burst and runs %d busy intentions '
+                '(`!!spin` loops, a step of work per turn).' % BUSY_INTENTIONS, '',
+                reaction_table(results['reaction'])]
     if 'scale' in results:
         out += ['## Scale: agents in one process, each hearing 10 perceptions × 10 Hz', '',
                 scale_table(results['scale'])]
+    if 'behaviour' in results:
+        out += ['## Behaviour', '', behaviour_text(results['behaviour'])]
+    if results.get('durations_s'):
+        out += ['Duration: %s s in all; %s.' % (
+            '%.0f' % results['duration_s'] if 'duration_s' in results else '?',
+            ', '.join('%s %.0f s' % kv for kv in results['durations_s'].items())), '']
+    if results.get('errors'):
+        out += ['## Failed parts', ''] + ['- %s: %s' % kv for kv in sorted(results['errors'].items())] + ['']
     return '\n'.join(out)
