@@ -38,7 +38,10 @@ public final class Bridge implements Fleet.Listener {
     private final Fleet fleet = new Fleet(logger, this);
     private final WarnOnce warned = new WarnOnce(logger);
     private final Object presencePushLock = new Object();
-    private int lastActionId = 0; // guarded by this
+    // Ids start at a random point of each run, so a restarted process (or a second one for the
+    // same agent name) does not reuse the ids a decomposer may still hold; 0 is never used
+    // (a cancel for id 0 means every action of the agent).
+    private int lastActionId = new java.security.SecureRandom().nextInt(1 << 30); // guarded by this
 
     private volatile long actionTimeoutNanos = 60_000_000_000L;
     private volatile long perceptionTtlNanos = 2_000_000_000L;
@@ -145,7 +148,8 @@ public final class Bridge implements Fleet.Listener {
     }
 
     public synchronized int nextActionId() {
-        return ++lastActionId;
+        lastActionId = lastActionId == Integer.MAX_VALUE ? 1 : lastActionId + 1;
+        return lastActionId;
     }
 
     // ---- agents ------------------------------------------------------------------------
