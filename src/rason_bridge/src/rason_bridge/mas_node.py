@@ -101,6 +101,7 @@ class RasonMasNode(object):
         self.mas_id = rospy.get_name()
         self._incarnation = time.time_ns()
         self._bridge.setMasId(self.mas_id)
+        self._bridge.setIncarnation(self._incarnation)
         self._presence_period = presence_period
         self._presence_stop = threading.Event()
         self._announce_lock = threading.Lock()

@@ -286,6 +286,11 @@ public final class Bridge implements Fleet.Listener {
         fleet.setPresenceTimeoutNanos(t);
     }
 
+    /** This process's start time as its presence announces it. */
+    public void setIncarnation(long t) {
+        fleet.setIncarnation(t);
+    }
+
     /**
      * A rason_msgs/AgentMessage arrived. Messages for other processes and our
      * own are ignored; malformed ones are logged and dropped.
@@ -323,6 +328,11 @@ public final class Bridge implements Fleet.Listener {
             for (RosAgArch arch : registry.all())
                 arch.presenceUpdate(names);
         }
+    }
+
+    @Override
+    public void mustStop(String why) {
+        outbox.offer(new Outbound.Stop(1));
     }
 
     @Override
