@@ -2,7 +2,8 @@
 their own and writes ``report.md``, ``results.json`` and PNG plots.
 
 Options: ``--seconds`` (length of one measured run, default 1), ``--quick`` (a subset of
-cells, for a smoke run), ``--only`` (cycle, latency, scale), ``--out`` (directory).
+cells, for a smoke run), ``--only`` (cycle, latency, scale, preemption), ``--take-backs``
+(rounds of the preemption part), ``--out`` (directory).
 """
 import argparse
 import datetime
@@ -15,13 +16,20 @@ import time
 
 from rason_bench import plots, report, thesis
 
+PARTS = ('cycle', 'latency', 'scale', 'preemption')
+TAKE_BACKS, TAKE_BACKS_QUICK = 200, 50
+#: motion_decomp's ~rate in the preemption part: the 50 Hz control period of the goal.
+CONTROL_RATE_HZ = 50.0
+
 
 def _parse(argv):
     ap = argparse.ArgumentParser(prog='run_bench', description=__doc__.split('\n\n')[0])
     ap.add_argument('--seconds', type=float, default=1.0, help='length of one measured run (s)')
     ap.add_argument('--quick', action='store_true', help='perceptions {1, 10} x {1, 50} Hz, fewer samples')
-    ap.add_argument('--only', action='append', choices=('cycle', 'latency', 'scale'),
-                    help='run only these parts (repeatable)')
+    ap.add_argument('--only', action='append', choices=PARTS, help='run only these parts (repeatable)')
+    ap.add_argument('--take-backs', type=int, default=None,
+                    help='take-backs measured by the preemption part (default %d, %d with --quick)'
+                    % (TAKE_BACKS, TAKE_BACKS_QUICK))
     ap.add_argument('--out', default='results/bench', help='output directory')
     return ap.parse_args(argv)
 
@@ -44,15 +52,17 @@ def machine_facts():
 
 def main(argv=None):
     args = _parse(sys.argv[1:] if argv is None else argv)
-    parts = args.only or ['cycle', 'latency', 'scale']
+    parts = args.only or list(PARTS)
     out_dir = os.path.abspath(args.out)
     os.makedirs(out_dir, exist_ok=True)
     perceptions = (1, 10) if args.quick else thesis.PERCEPTIONS
     rates = (1, 50) if args.quick else thesis.RATES_HZ
     pings, stamps = (100, 50) if args.quick else (1000, 300)
+    take_backs = args.take_backs or (TAKE_BACKS_QUICK if args.quick else TAKE_BACKS)
     results = {'machine': machine_facts(),
                'params': {'seconds': args.seconds, 'perceptions': list(perceptions), 'rates_hz': list(rates),
-                          'pings': pings, 'stamps': stamps, 'stamp_period_s': 0.02, 'quick': args.quick}}
+                          'pings': pings, 'stamps': stamps, 'stamp_period_s': 0.02, 'quick': args.quick,
+                          'take_backs': take_backs}}
 
     def log(line):
         print(line, flush=True)
@@ -80,6 +90,9 @@ def main(argv=None):
             log('scale')
             iterations = results['cycle']['per_source']['iterations'] if 'cycle' in results else 20000
             results['scale'] = experiments.scale(procs, harness, (1, 10, 100), args.seconds, iterations, log)
+        if 'preemption' in parts:
+            log('preemption (motion_decomp at %g Hz)' % CONTROL_RATE_HZ)
+            results['preemption'] = experiments.preemption(procs, harness, take_backs, CONTROL_RATE_HZ, log)
     finally:
         procs.stop_master()
     results['duration_s'] = round(time.monotonic() - started, 1)

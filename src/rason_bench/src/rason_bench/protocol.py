@@ -12,9 +12,12 @@ Cycle = namedtuple('Cycle', 'run iterations ms')
 RoundTrip = namedtuple('RoundTrip', 'run index ms')
 #: ``seen(Run, Seq, Ms)``: the percept stamp(Run, Seq, T) reached a plan Ms after T.
 Seen = namedtuple('Seen', 'run seq ms')
+#: ``took_back(Run, I, T)``: the agent took round I's motion back at T (``rason.time_ms``,
+#: read right before ``.drop_intention``).
+TookBack = namedtuple('TookBack', 'run index ms')
 
 _REPORTS = {'cycle': (Cycle, (int, int, float)), 'rtt': (RoundTrip, (int, int, float)),
-            'seen': (Seen, (int, int, float))}
+            'seen': (Seen, (int, int, float)), 'took_back': (TookBack, (int, int, float))}
 
 #: Source of the harness's control percepts.
 CONTROL_SOURCE = 'bench_control'
@@ -27,7 +30,7 @@ class BadReport(ValueError):
 
 
 def parse_report(action, parameters):
-    """A report action as a Cycle, RoundTrip or Seen; None for actions that are not reports.
+    """A report action as a Cycle, RoundTrip, Seen or TookBack; None for actions that are not reports.
 
     :raises BadReport: a report with the wrong number or kind of parameters
     """
@@ -51,6 +54,16 @@ def go_cycle(agent, run, iterations):
 def go_ping(agent, run, count):
     """Control percept: ``agent`` acts ``ping`` ``count`` times, reporting each round trip."""
     return 'go_ping(%s,%d,%d)' % (agent, run, count)
+
+
+def go_move(agent, run, index):
+    """Control percept: ``agent`` starts round ``index``'s ``move(3)`` (agents/preempt.asl)."""
+    return 'go_move(%s,%d,%d)' % (agent, run, index)
+
+
+def take_back(agent, run, index):
+    """Control percept: ``agent`` drops round ``index``'s motion and reports ``took_back``."""
+    return 'take_back(%s,%d,%d)' % (agent, run, index)
 
 
 def stamp(run, seq, now_ms):
