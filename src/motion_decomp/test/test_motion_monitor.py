@@ -413,6 +413,69 @@ def test_scheduler_cancel_all_reports_running_and_queued():
     assert s.step((0.0, 0.0, 0.0), 1.0) == (None, None)
 
 
+def test_scheduler_cancel_of_a_queued_motion_removes_it_and_keeps_the_order():
+    s = m.MotionScheduler()
+    for action_id, action in ((1, 'move'), (2, 'turn'), (3, 'move')):
+        s.submit('a', action_id, action, ['0.1'])
+    cmd, _ = s.step((0.0, 0.0, 0.0), 0.0)          # 1 runs
+    assert cmd == (0.2, 0.0)
+    assert s.cancel('a', 2) == (None, [m.Feedback('a', 2, Event.CANCELLED)])
+    assert s.pending == 1
+    # the running motion goes on undisturbed, then 3 (not 2) runs
+    pose, t, ended = (0.0, 0.0, 0.0), 0.0, []
+    while len(ended) < 2 and t < 10:
+        t += DT
+        pose = unicycle(pose, *cmd) if cmd else pose
+        cmd, fb = s.step(pose, t)
+        if fb is not None:
+            ended.append(fb)
+    assert ended == [m.Feedback('a', 1, Event.OK), m.Feedback('a', 3, Event.OK)]
+    assert pose[0] == pytest.approx(0.2, abs=0.022)
+
+
+def test_scheduler_cancel_of_the_running_motion_stops_now_and_starts_the_next_at_the_next_step():
+    s = m.MotionScheduler()
+    s.submit('a', 1, 'move', ['1'])
+    s.submit('a', 2, 'turn', ['90'])
+    assert s.step((0.0, 0.0, 0.0), 0.0) == ((0.2, 0.0), None)
+    assert s.step((0.01, 0.0, 0.0), DT) == ((0.2, 0.0), None)
+    command, feedbacks = s.cancel('a', 1)
+    assert command == (0.0, 0.0)
+    assert feedbacks == [m.Feedback('a', 1, Event.CANCELLED)]
+    assert s.current is None and s.pending == 1
+    # next step: the turn starts from where the move stopped, with no end of its own
+    cmd, fb = s.step((0.01, 0.0, 0.0), 2 * DT)
+    assert fb is None and cmd == (0.0, -0.5)
+    assert s.current[1].start_pose == (0.01, 0.0, 0.0)
+
+
+def test_scheduler_cancel_zero_takes_back_every_motion_of_the_agent_only():
+    s = m.MotionScheduler()
+    s.submit('a', 1, 'move', ['1'])
+    s.submit('b', 1, 'move', ['1'])
+    s.submit('a', 2, 'turn', ['90'])
+    s.step((0.0, 0.0, 0.0), 0.0)
+    command, feedbacks = s.cancel('a', 0)
+    assert command == (0.0, 0.0)
+    assert feedbacks == [m.Feedback('a', 1, Event.CANCELLED), m.Feedback('a', 2, Event.CANCELLED)]
+    cmd, fb = s.step((0.0, 0.0, 0.0), DT)
+    assert fb is None and cmd == (0.2, 0.0)        # b's move runs now
+    assert s.current[0].agent == 'b' and s.pending == 0
+
+
+def test_scheduler_cancel_of_an_unknown_or_finished_motion_changes_nothing():
+    s = m.MotionScheduler()
+    s.submit('a', 1, 'move', ['0'])
+    assert s.step((0.0, 0.0, 0.0), 0.0) == ((0.0, 0.0), m.Feedback('a', 1, Event.OK))
+    s.submit('a', 2, 'move', ['1'])
+    s.step((0.0, 0.0, 0.0), DT)
+    assert s.cancel('a', 1) == (None, [])      # finished
+    assert s.cancel('a', 9) == (None, [])      # unknown
+    assert s.cancel('b', 0) == (None, [])      # another agent
+    assert s.cancel('b', 2) == (None, [])      # same id, another agent
+    assert s.step((0.0, 0.0, 0.0), 2 * DT) == ((0.2, 0.0), None)
+
+
 def test_scheduler_no_odometry_fails_no_progress_and_never_drives():
     s = m.MotionScheduler(no_progress_time=1.0)
     s.submit('a', 3, 'move', ['1'])

@@ -20,7 +20,8 @@ class TestEventFiltering(unittest.TestCase):
         self.log = LogWatcher()
         self.actions = []
         # this test is the decomposer of hold(1)
-        rospy.Subscriber('jason/action', Action, self.actions.append)
+        rospy.Subscriber('jason/action', Action,
+                         lambda a: a.action == Action.CANCEL or self.actions.append(a))
         self.events = rospy.Publisher('jason/event', Event, queue_size=10)
         self.go = start_agents(self.log)
 

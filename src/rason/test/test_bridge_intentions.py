@@ -9,7 +9,7 @@ import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'nodes'))
 from rason_testing import LogWatcher, start_agents  # noqa: E402
-from rason_msgs.msg import Action  # noqa: E402
+from rason_msgs.msg import Action, Event  # noqa: E402
 
 
 class TestIntentions(unittest.TestCase):
@@ -35,12 +35,14 @@ class TestIntentions(unittest.TestCase):
     def test_action_is_published_in_the_namespace_with_its_parameters(self):
         self.assertTrue(self.log.wait_for(r'slow started', timeout=30))
         deadline = rospy.Time.now() + rospy.Duration(5)
-        while not self.actions and rospy.Time.now() < deadline:
+        while len(self.actions) < 2 and rospy.Time.now() < deadline:
             rospy.sleep(0.05)
         self.assertEqual(rospy.resolve_name('jason/action'), '/robot1/jason/action')
+        # a (re)started bridge first stops whatever an earlier run of it left, then acts
         self.assertEqual([(a.agent, a.action, list(a.parameters)) for a in self.actions],
-                         [('worker', 'slow', ['2'])])
-        self.assertGreater(self.actions[0].action_id, 0)
+                         [('worker', Action.CANCEL, [Event.RESTART]), ('worker', 'slow', ['2'])])
+        self.assertEqual(self.actions[0].action_id, 0)
+        self.assertGreater(self.actions[1].action_id, 0)
 
     def test_hosted_agents_are_listed_on_a_parameter(self):
         self.assertTrue(self.log.wait_for(r'slow started', timeout=30))

@@ -8,6 +8,7 @@ def test_reports_parse_from_action_parameters():
     assert protocol.parse_report('cycle', ['3', '20000', '412.5']) == protocol.Cycle(3, 20000, 412.5)
     assert protocol.parse_report('rtt', ['4', '17', '0.85']) == protocol.RoundTrip(4, 17, 0.85)
     assert protocol.parse_report('seen', ['5', '2', '1.25']) == protocol.Seen(5, 2, 1.25)
+    assert protocol.parse_report('took_back', ['6', '3', '8123456.789']) == protocol.TookBack(6, 3, 8123456.789)
 
 
 def test_new_reports_parse_with_their_types():
@@ -39,6 +40,7 @@ def test_triggers_take_the_sources_in_turn():
 def test_other_actions_are_not_reports():
     assert protocol.parse_report('ping', ['1']) is None
     assert protocol.parse_report('move', ['0.3']) is None
+    assert protocol.parse_report('.cancel', ['dropped']) is None
 
 
 @pytest.mark.parametrize('parameters', [['1', '2'], ['1', '2', '3', '4'], ['a', '2', '3.0']])
@@ -60,3 +62,5 @@ def test_control_percepts_name_agent_run_and_size():
     assert protocol.go_spin('bench', 7, 50) == 'go_spin(bench,7,50)'
     assert protocol.stop_spin('bench', 7) == 'stop_spin(bench,7)'
     assert protocol.tick(8, 2) == 'tick(8,2)'
+    assert protocol.go_move('preempt', 7, 0) == 'go_move(preempt,7,0)'
+    assert protocol.take_back('preempt', 7, 0) == 'take_back(preempt,7,0)'

@@ -12,6 +12,17 @@ def _cell(p, r, ms, base):
             'baseline_cpu_percent': 50.0}
 
 
+def _summary(p50, p99):
+    return {'n': 50, 'p50': p50, 'p90': p99, 'p99': p99, 'max': p99}
+
+
+def _preemption(stop_p99):
+    return {'stop_ms': _summary(7.5, stop_p99), 'cancel_ms': _summary(1.3, 5.0),
+            'cancel_to_stop_ms': _summary(4.0, stop_p99 - 5.0), 'take_backs': 50, 'warmup': 5,
+            'ended_early': 0, 'control_rate_hz': 50.0, 'base_rate_hz': 50.0, 'max_delay_s': 0.1,
+            'seconds': 6.0}
+
+
 def _results(ratio_10x50=1.1, rtt=(1.0, 5.0), seen=2.0):
     per_source = {'iterations': 1000, 'cells': [_cell(1, 1, 0.020, 0.020), _cell(10, 50, 0.020 * ratio_10x50, 0.020)]}
     return {'machine': {'date': 'd', 'cpus': 2, 'cpu_model': 'cpu', 'load_at_start': [0.1, 0.2, 0.3]},
@@ -172,3 +183,38 @@ def test_markdown_has_the_new_sections_and_failed_parts():
     assert '| vision | 9.8 | ≥ 9 |' in text
     assert 'behaviour.sim: RuntimeError' in text
     assert 'Duration: 100 s in all; cpu 60 s, behaviour.sim 30 s.' in text
+def test_preemption_goal_is_p99_within_one_control_period_plus_transport():
+    results = _results()
+    results['preemption'] = _preemption(stop_p99=15.4)
+    goal, measured, met = report.goals(results)[-1]
+    assert goal.startswith('preemption: take-back -> zero twist p99 <= 60 ms')
+    assert (measured, met) == ('15.40 ms (50 take-backs)', True)
+    results['preemption'] = _preemption(stop_p99=60.5)
+    assert report.goals(results)[-1][1:] == ('60.50 ms (50 take-backs)', False)
+
+
+def test_preemption_goal_without_samples_is_not_met():
+    results = _results()
+    results['preemption'] = dict(_preemption(10.0), stop_ms={'n': 0})
+    assert report.goals(results)[-1][1:] == ('no take-back measured', False)
+
+
+def test_preemption_goal_left_out_without_the_part():
+    assert not any(g.startswith('preemption') for g, _, _ in report.goals(_results()))
+
+
+def test_preemption_table_shows_where_the_time_goes():
+    rows = report.preemption_table(_preemption(stop_p99=15.4)).splitlines()
+    assert rows[0] == '|  | n | p50 ms | p90 ms | p99 ms | max ms |'
+    assert rows[2] == '| take-back → zero twist on `cmd_vel` | 50 | 7.50 | 15.40 | 15.40 | 15.40 |'
+    assert rows[3].startswith('| take-back → `.cancel` heard on `jason/action` | 50 | 1.30 |')
+    assert rows[4].startswith('| `.cancel` heard → zero twist | 50 | 4.00 |')
+
+
+def test_markdown_preemption_section_states_the_control_rate_and_the_verdict():
+    results = _results()
+    results['preemption'] = _preemption(stop_p99=70.0)
+    text = report.markdown(results)
+    assert '## Preemption latency' in text
+    assert '`~rate` 50 Hz' in text
+    assert '| 70.00 ms (50 take-backs) | **not met** |' in text

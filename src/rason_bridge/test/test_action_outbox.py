@@ -99,3 +99,14 @@ def test_held_actions_keep_their_order():
     g.connected = 1
     box.flush()
     assert g.sent == ['a', 'b', 'c']
+
+
+def test_an_action_never_overtakes_one_held_before_it():
+    g = FakeGraph(connected=0, listed=1)
+    box = g.outbox()
+    assert box.submit('move(1)') == DEFERRED
+    g.connected = 1  # connected now, but move(1) is still held: its cancel must wait behind it
+    assert box.submit('cancel move(1)') == DEFERRED
+    assert g.sent == []
+    assert box.flush() == 0
+    assert g.sent == ['move(1)', 'cancel move(1)']

@@ -1,8 +1,8 @@
-"""The protocol's words are spelt once: rason_msgs/Event.msg's constants, which the Java
-side (rason.bridge.Protocol) must repeat exactly."""
+"""The protocol's words are spelt once: rason_msgs' Event.msg and Action.msg constants, which
+the Java side (rason.bridge.Protocol) must repeat exactly."""
 import jpype
 import pytest
-from rason_msgs.msg import Event
+from rason_msgs.msg import Action, Event
 
 from rason_bridge.jvm import start_jvm
 
@@ -10,12 +10,19 @@ start_jvm()
 Protocol = jpype.JClass('rason.bridge.Protocol')
 
 
-@pytest.mark.parametrize('name', ['ACTION_FEEDBACK', 'OK', 'TIMEOUT', 'NO_DECOMPOSER', 'SHUTDOWN', 'BRIDGE_ERROR'])
-def test_java_protocol_words_are_the_message_constants(name):
+@pytest.mark.parametrize('name', ['ACTION_FEEDBACK', 'ACTION_STARTED', 'OK', 'CANCELLED', 'TIMEOUT',
+                                  'NO_DECOMPOSER', 'SHUTDOWN', 'BRIDGE_ERROR', 'DECOMPOSER_LOST',
+                                  'SUSPENDED', 'DROPPED', 'RESTART'])
+def test_java_protocol_words_are_the_event_constants(name):
     assert str(getattr(Protocol, name)) == getattr(Event, name)
+
+
+def test_the_cancel_action_name_is_the_action_constant():
+    assert str(Protocol.CANCEL) == Action.CANCEL
 
 
 def test_every_java_protocol_word_is_a_message_constant():
     fields = [str(f.getName()) for f in Protocol.class_.getDeclaredFields()
               if jpype.JClass('java.lang.reflect.Modifier').isPublic(f.getModifiers())]
-    assert fields and all(getattr(Event, f, None) == str(getattr(Protocol, f)) for f in fields), fields
+    assert fields and all(str(getattr(Protocol, f)) in (getattr(Event, f, None), getattr(Action, f, None))
+                          for f in fields), fields

@@ -3,13 +3,15 @@
 Publishes each diagnosis on /diagnostics (DiagnosticStatus ``rason/diagnosis``, values
 agent, component, evidence), once at once and then every ``~period`` s while it is the
 latest (diagnostic aggregators expect repeats), and answers the action ``Event.OK``, or
-``Event.BAD_PARAMETERS`` when the component is unknown.
+``Event.BAD_PARAMETERS`` when the component is unknown (at once, without action_started).
+jason/action and jason/event go through rason_decomposer's Decomposer.
 """
 import threading
 
 import rospy
 from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus, KeyValue
-from rason_msgs.msg import Action, Event
+from rason_decomposer.node import Decomposer
+from rason_msgs.msg import Event
 
 from diagnosis_reporter import report
 
@@ -20,29 +22,26 @@ class DiagnosisReporter(object):
         self._latest = None
         self._lock = threading.Lock()
         self._diag_pub = rospy.Publisher('/diagnostics', DiagnosticArray, queue_size=10)
-        self._event_pub = rospy.Publisher('jason/event', Event, queue_size=10)
-        rospy.Subscriber('jason/action', Action, self._on_action, queue_size=10)
+        self._decomposer = Decomposer([report.ACTION], self._on_start, self._on_cancel)
         if period > 0:
             rospy.Timer(rospy.Duration(period), lambda _: self._publish())
 
-    def _on_action(self, msg):
-        if msg.action != report.ACTION:
-            return  # another decomposer's action
+    def _on_start(self, action):
         try:
-            diagnosis = report.parse(msg.agent, list(msg.parameters))
+            diagnosis = report.parse(action.agent, list(action.parameters))
         except report.BadDiagnosis as e:
             rospy.logerr('diagnosis_reporter: %s', e)
-            self._answer(msg, Event.BAD_PARAMETERS)
+            self._decomposer.refuse(action, Event.BAD_PARAMETERS)
             return
         rospy.loginfo('diagnosis_reporter: %s', diagnosis.message)
         with self._lock:
             self._latest = diagnosis
         self._publish()
-        self._answer(msg, Event.OK)
+        self._decomposer.finish(action, Event.OK)
 
-    def _answer(self, action, result):
-        self._event_pub.publish(Event(agent=action.agent, event_type=Event.ACTION_FEEDBACK,
-                                      parameters=[result, str(action.action_id)]))
+    def _on_cancel(self, action, reason):
+        # answered within on_start: nothing runs that could be stopped
+        pass
 
     def _publish(self):
         with self._lock:

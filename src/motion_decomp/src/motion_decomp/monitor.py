@@ -41,6 +41,9 @@ constants of ``rason_msgs/Event`` (``Event.OK``, ``Event.NO_PROGRESS``, ...):
     the motion ran ``max_duration`` seconds without another result.
 ``shutdown``
     the node stopped before the motion ended.
+``cancelled``
+    the motion was taken back (``Action.CANCEL``, or the agent's link is gone) while queued
+    or running: :meth:`MotionScheduler.cancel`; a running motion is commanded zero at once.
 """
 import math
 import re
@@ -351,6 +354,32 @@ class MotionScheduler(object):
             return monitor.command(), None
         self.current = None
         return (0.0, 0.0), Feedback(request.agent, request.action_id, result)
+
+    def cancel(self, agent, action_id):
+        """Take back motions (an ``Action.CANCEL``): a queued one leaves the queue, the
+        running one ends now; the next queued motion starts at the next :meth:`step`.
+
+        :param agent: whose motions
+        :param action_id: the motion's id, or 0: every motion of ``agent``
+        :returns: ``(command, feedbacks)``: ``command`` is ``(0.0, 0.0)`` when the running
+            motion was stopped (publish it at once), else ``None``; ``feedbacks`` are the
+            :class:`Feedback` ``Event.CANCELLED`` of the cancelled motions, the running one
+            first, then the queued ones in order (empty for an unknown or finished id)
+        """
+        def named(request):
+            return request.agent == agent and (action_id == 0 or request.action_id == action_id)
+
+        cancelled = []
+        command = None
+        if self.current is not None and named(self.current[0]):
+            cancelled.append(self.current[0])
+            self.current = None
+            command = (0.0, 0.0)
+        kept = deque()
+        for request in self._queue:
+            (cancelled if named(request) else kept).append(request)
+        self._queue = kept
+        return command, [Feedback(r.agent, r.action_id, Event.CANCELLED) for r in cancelled]
 
     def cancel_all(self, reason=Event.SHUTDOWN):
         """End the running and all queued motions; returns their feedback, oldest first.

@@ -12,8 +12,13 @@ Topics (relative names: run one node per robot, in the robot's namespace or with
   ignored with a throttled warning
 - publishes ``cmd_vel`` (geometry_msgs/Twist) at ``~rate`` while a motion runs, and one
   zero Twist when it ends; nothing while idle
-- publishes ``jason/event`` (rason_msgs/Event): one ``action_feedback`` per handled action,
+- publishes ``jason/event`` (rason_msgs/Event): ``action_started [action_id]`` when a motion
+  is taken (not for ``bad_parameters``), then one ``action_feedback`` per handled action,
   parameters ``[result, str(action_id)]``
+- takes motions back (rason_decomposer): an ``Action.CANCEL`` (one id, or 0 = all of the
+  agent) or the loss of the requesting agent's link (checked at 10 Hz) removes a queued
+  motion, or stops the running one with a zero Twist at once; the answer is ``cancelled``
+  and the next queued motion starts at the next control tick
 
 Private parameters (defaults suit a TurtleBot 2 / Kobuki):
 
@@ -33,9 +38,11 @@ import threading
 import rospy
 from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
-from rason_msgs.msg import Action, Event
+from rason_decomposer.node import Decomposer
+from rason_msgs.msg import Event
 
 from motion_decomp import monitor
+
 
 def pose_from_odometry(msg):
     """``(x, y, yaw)`` of a nav_msgs/Odometry, or ``None`` when a field is NaN/inf.
@@ -69,12 +76,13 @@ def twist(linear_x, angular_z):
     return msg
 
 
-def action_text(msg):
-    """An Action as Jason-like text for logs, e.g. ``move(1)``.
+def action_text(action):
+    """An action as Jason-like text for logs, e.g. ``move(1)``.
 
-    :param msg: rason_msgs/Action
+    :param action: a taken action (``name``, ``parameters``) or a rason_msgs/Action
     """
-    return '%s(%s)' % (msg.action, ', '.join(msg.parameters))
+    name = getattr(action, 'name', None) or getattr(action, 'action', '?')
+    return '%s(%s)' % (name, ', '.join(action.parameters))
 
 
 def agent_filter(value):
@@ -88,7 +96,8 @@ def agent_filter(value):
 
 
 class MotionDecompNode(object):
-    """Wires a :class:`monitor.MotionScheduler` to ROS topics.
+    """Wires a :class:`monitor.MotionScheduler` to ROS topics, through a
+    :class:`rason_decomposer.node.Decomposer` (jason/action, jason/event, cancels).
 
     :param options: motion tuning, keys of :data:`monitor.DEFAULTS`
     :param rate: control rate, Hz
@@ -98,13 +107,15 @@ class MotionDecompNode(object):
     def __init__(self, options, rate=20.0, agents=()):
         self._lock = threading.Lock()
         self._scheduler = monitor.MotionScheduler(**options)
-        self._agents = set(agents)
         self._pose = None
+        self._actions = {}      # (agent, action_id) -> the Decomposer's action, queued or running
         self._cmd_pub = rospy.Publisher('cmd_vel', Twist, queue_size=10)
-        self._event_pub = rospy.Publisher('jason/event', Event, queue_size=100)
         rospy.Subscriber('odom', Odometry, self._on_odom, queue_size=10)
-        rospy.Subscriber('jason/action', Action, self._on_action, queue_size=100)
+        # registered before the Decomposer's hook: the control loop stops before the
+        # Decomposer stops (on_cancel) and answers every held motion with shutdown
         rospy.on_shutdown(self._on_shutdown)
+        self._decomposer = Decomposer(monitor.MOTION_ACTIONS, self._on_start, self._on_cancel,
+                                      agents=agents)
         self._timer = rospy.Timer(rospy.Duration(1.0 / rate), self._tick)
 
     def _on_odom(self, msg):
@@ -115,47 +126,49 @@ class MotionDecompNode(object):
         with self._lock:
             self._pose = pose
 
-    def _on_action(self, msg):
-        if not monitor.is_motion(msg.action):
-            rospy.logdebug('motion_decomp: not mine: %s', action_text(msg))
-            return
-        if self._agents and msg.agent not in self._agents:
-            rospy.logdebug('motion_decomp: %s is not served here', msg.agent)
-            return
+    def _on_start(self, action):
         with self._lock:
-            feedback = self._scheduler.submit(msg.agent, msg.action_id, msg.action, msg.parameters)
+            feedback = self._scheduler.submit(action.agent, action.action_id, action.name,
+                                              action.parameters)
+            if feedback is None:
+                self._actions[action.key] = action
             pending = self._scheduler.pending
         if feedback is not None:
-            rospy.logwarn('motion_decomp: %s: %s (id %d) fails %s', msg.agent, action_text(msg),
-                          msg.action_id, feedback.result)
-            self._event_pub.publish(feedback_event(feedback))
+            rospy.logwarn('motion_decomp: %s: %s (id %d) fails %s', action.agent,
+                          action_text(action), action.action_id, feedback.result)
+            self._decomposer.refuse(action, feedback.result)
         else:
-            rospy.loginfo('motion_decomp: %s: %s (id %d) queued (%d in the queue)', msg.agent,
-                          action_text(msg), msg.action_id, pending)
+            rospy.loginfo('motion_decomp: %s: %s (id %d) queued (%d in the queue)', action.agent,
+                          action_text(action), action.action_id, pending)
+
+    def _on_cancel(self, action, reason):
+        with self._lock:
+            command, cancelled = self._scheduler.cancel(action.agent, action.action_id)
+            self._actions.pop(action.key, None)
+            if command is not None:
+                # at once, and under the lock so no command of the cancelled motion follows
+                self._cmd_pub.publish(twist(*command))
+        if cancelled:
+            rospy.loginfo('motion_decomp: %s: %s (id %d) %s (%s)', action.agent, action_text(action),
+                          action.action_id, 'stopped' if command else 'taken out of the queue',
+                          reason)
 
     def _tick(self, _event):
         with self._lock:
             command, feedback = self._scheduler.step(self._pose, rospy.get_time())
-        if command is not None:
-            self._cmd_pub.publish(twist(*command))
+            action = None
+            if feedback is not None:
+                action = self._actions.pop((feedback.agent, feedback.action_id), None)
+            if command is not None:
+                self._cmd_pub.publish(twist(*command))
         if feedback is not None:
             rospy.loginfo('motion_decomp: %s: action %d ended: %s',
                           feedback.agent, feedback.action_id, feedback.result)
-            self._event_pub.publish(feedback_event(feedback))
+            if action is not None:
+                self._decomposer.finish(action, feedback.result)
 
     def _on_shutdown(self):
-        # Best effort: the publishers may already be closing.
         self._timer.shutdown()
-        with self._lock:
-            was_running = self._scheduler.current is not None
-            feedbacks = self._scheduler.cancel_all(Event.SHUTDOWN)
-        try:
-            if was_running:
-                self._cmd_pub.publish(twist(0.0, 0.0))
-            for feedback in feedbacks:
-                self._event_pub.publish(feedback_event(feedback))
-        except rospy.ROSException:
-            pass
 
 
 def main():

@@ -82,9 +82,11 @@ helpTimeout(120000).
 +!askForHelp
 <- !conclude(undiagnosed, "no other robot to ask for help").
 
-// IMPROVED: the help may never come (helper lost, perception lost, ...).
+// IMPROVED: the help may never come (helper lost, perception lost, ...). A move still
+// running for the helper stops with it (the bridge cancels it: no motion outlives its goal).
 +!helpWatchdog : helpTimeout(T)
 <- .wait(T);
+    .drop_desire(tryMove);
     !conclude(undiagnosed, "no diagnosis within the help timeout").
 
 //Plans to help diagnose

@@ -36,6 +36,16 @@ maxSteadyReads(15).
   .print("helper ready.");
   .send(R,tell,found(R)).
 
+// IMPROVED: the robot asking for help left (its agents stopped, or it is gone): stop
+// searching for it or tracking it; a turn under way stops at once (the bridge cancels it).
+-present(R) : helping(R)
+<- .print(R, " left; I stop helping it");
+  .drop_desire(helpme);
+  .drop_desire(trackMe);
+  .drop_desire(giveFeedback);
+  -helping(R);
+  -foundRobot(R,_,_,_).
+
 // IMPROVED: say so when the robot was not found, instead of searching for ever.
 -!helpme[source(R)]
   <- .print("I could not find ", R);

@@ -7,17 +7,21 @@
 4. :func:`reaction`: perception -> the agent's action, idle and under load (a burst and
    busy intentions).
 5. :func:`scale`: 1, 10, 100 agents in one process hearing 10 perceptions at 10 Hz.
+6. :func:`preemption`: an agent takes its ``move`` back; time to the zero twist of the real
+   ``motion_decomp`` node on ``cmd_vel`` (a stand-in base, ``bench_base``, gives it odometry).
 
 The simulator's rates, wake-up and the rate limit are in :mod:`rason_bench.behaviour`.
 """
 import contextlib
 import os
+import random
 import time
 
 import psutil
 import rospy
+from rason_msgs.msg import Action
 
-from rason_bench import stats
+from rason_bench import preempt, protocol, stats
 
 AGENTS_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'agents')
 BURST_SOURCE = 'bench_synth_burst'
@@ -270,3 +274,64 @@ def _cpu_over(mas, seconds):
     cpu0, t0 = mas.cpu_seconds(), time.monotonic()
     time.sleep(seconds)
     return 100.0 * (mas.cpu_seconds() - cpu0) / (time.monotonic() - t0)
+
+
+def preemption(procs, harness, rounds, control_rate, log, warmup=5, max_delay=0.1, seed=1):
+    """``rounds`` take-backs (after ``warmup`` unrecorded ones) by the agent of
+    ``preempt.mas2j``, with ``motion_decomp`` at ``control_rate`` Hz and ``bench_base`` at 50 Hz.
+
+    A round: the agent starts ``move(3)``; once a non-zero twist is heard on ``cmd_vel``
+    and a further random 0..``max_delay`` s have passed (so take-backs fall anywhere in a
+    control period), the agent is asked to take it back; the round ends when the zero twist,
+    the ``.cancel`` on ``jason/action`` and the agent's ``took_back(T)`` have all been heard.
+    Returns the summaries (ms) and samples of take-back -> zero twist, take-back -> cancel
+    heard, cancel -> zero twist.
+    """
+    from rason_bench.harness import MotionWatch
+    rng = random.Random(seed)
+    base = procs.rosrun('bench_base', 'rason_bench', 'bench_base', rate=50.0)
+    decomp = procs.rosrun('motion_decomp', 'motion_decomp', 'motion_decomp_node', rate=float(control_rate))
+    watch = MotionWatch()
+    samples = {'stop_ms': [], 'cancel_ms': [], 'cancel_to_stop_ms': []}
+    ended_early = 0
+    try:
+        watch.wait_publisher(60.0)
+        with Mas(procs, harness, 'preempt.mas2j') as mas:
+            agent = mas.agents[0]
+            started = time.monotonic()
+            for i in range(warmup + rounds):
+                run = harness.next_run()
+                rnd = watch.start_round()
+                since = time.monotonic()
+                harness.control(protocol.go_move(agent, run, i))
+                _, move_id = harness.noted_action(agent, 'move', since, 30.0)
+                watch.wait(lambda r: r.under_way is not None, 30.0, 'motion on cmd_vel')
+                time.sleep(rng.uniform(0.0, max_delay))
+                sent = time.monotonic()
+                harness.control(protocol.take_back(agent, run, i))
+                took_back = harness.reports(protocol.TookBack, run, 1, 30.0)[0]
+                cancel_seen, _ = harness.noted_action(agent, Action.CANCEL, since, 30.0, action_id=move_id)
+                watch.wait(lambda r: r.stopped is not None, 30.0, 'zero twist on cmd_vel')
+                if preempt.stopped_on_its_own(rnd, sent):
+                    ended_early += 1
+                    log('  round %d: the motion stopped before the take-back; not counted' % i)
+                    continue
+                if i < warmup:
+                    continue
+                for key, value in preempt.round_latencies(took_back.ms, rnd.stopped, cancel_seen).items():
+                    samples[key].append(value)
+            seconds = time.monotonic() - started
+    finally:
+        watch.close()
+        procs.stop(decomp)
+        procs.stop(base)
+    out = {key: stats.summarize(values) for key, values in samples.items()}
+    out.update({'take_backs': rounds, 'warmup': warmup, 'ended_early': ended_early,
+                'control_rate_hz': control_rate, 'base_rate_hz': 50.0, 'max_delay_s': max_delay,
+                'seconds': round(seconds, 1),
+                'samples': {key: [round(x, 3) for x in values] for key, values in samples.items()}})
+    log('  %d take-backs in %.0f s: take-back -> zero twist p50 %.2f p99 %.2f ms; take-back -> cancel'
+        ' heard p50 %.2f p99 %.2f ms' % (len(samples['stop_ms']), seconds, out['stop_ms'].get('p50', 0),
+                                         out['stop_ms'].get('p99', 0), out['cancel_ms'].get('p50', 0),
+                                         out['cancel_ms'].get('p99', 0)))
+    return out

@@ -1,14 +1,19 @@
 """The controlling node of a benchmark run: starts measurements with control percepts,
 acts as the decomposer of the benchmark agent's actions (``OK`` at once) and collects
-the reports in them (:mod:`rason_bench.protocol`)."""
+the reports in them (:mod:`rason_bench.protocol`); notes when it hears motions and their
+cancels on ``jason/action``. :class:`MotionWatch` times the twists on ``cmd_vel``."""
 import itertools
 import threading
 import time
 
 import rospy
+from geometry_msgs.msg import Twist
 from rason_msgs.msg import Action, Event, Perception
 
-from rason_bench import protocol
+from rason_bench import preempt, protocol
+
+#: Actions of other decomposers whose arrival the harness notes (time.monotonic).
+NOTED_ACTIONS = ('move', Action.CANCEL)
 
 
 class Timeout(RuntimeError):
@@ -21,6 +26,7 @@ class Harness(object):
         self._cond = threading.Condition()
         self._reports = []
         self._heard = {}  # perception source -> messages heard
+        self._noted = []  # (time.monotonic, agent, action, action_id) of NOTED_ACTIONS
         self._runs = itertools.count(1)
         self._events = rospy.Publisher('jason/event', Event, queue_size=1000, tcp_nodelay=True)
         self._perceptions = rospy.Publisher('jason/perception', Perception, queue_size=1000, tcp_nodelay=True)
@@ -33,6 +39,12 @@ class Harness(object):
     # ---- the decomposer of the agent's actions ----
 
     def _on_action(self, msg):
+        if msg.action in NOTED_ACTIONS:
+            now = time.monotonic()
+            with self._cond:
+                self._noted.append((now, msg.agent, msg.action, msg.action_id))
+                self._cond.notify_all()
+            return
         received_ms = time.monotonic() * 1000.0
         try:
             report = protocol.parse_report(msg.action, msg.parameters)
@@ -97,6 +109,18 @@ class Harness(object):
         """How many messages of ``source`` this node has heard on jason/perception."""
         with self._cond:
             return self._heard.get(source, 0)
+    def noted_action(self, agent, action, since, timeout, action_id=None):
+        """The first ``action`` (one of :data:`NOTED_ACTIONS`) of ``agent`` heard at or after
+        ``since`` (time.monotonic), with ``action_id`` if given: ``(time, action_id)``; older
+        notes are forgotten."""
+        def first():
+            return next((n for n in self._noted if n[0] >= since and n[1] == agent and n[2] == action
+                         and (action_id is None or n[3] == action_id)), None)
+        self._wait(lambda: first() is not None, timeout, '%s of %s' % (action, agent))
+        with self._cond:
+            found = first()
+            self._noted = [n for n in self._noted if n[0] >= since]
+        return found[0], found[3]
 
     def wait_heard(self, source, count=1, timeout=20.0):
         """Wait until ``count`` more messages of ``source`` have been heard."""
@@ -187,3 +211,47 @@ class Harness(object):
             return set(agents) <= {r.agent for r in found if r.seq == last}
         found = self.collect(protocol.Ticked, run, ready, timeout, 'the last tick at %s' % ', '.join(agents))
         return {a: [r for r in found if r.agent == a] for a in agents}
+
+class MotionWatch(object):
+    """Subscribes ``cmd_vel`` and times, per take-back round (:class:`preempt.Round`), the
+    first non-zero twist and the first zero twist after it (time.monotonic on arrival)."""
+
+    def __init__(self, topic='cmd_vel'):
+        self._cond = threading.Condition()
+        self._round = preempt.Round()
+        self._sub = rospy.Subscriber(topic, Twist, self._on_twist, queue_size=None, tcp_nodelay=True)
+
+    def _on_twist(self, msg):
+        now = time.monotonic()
+        zero = preempt.is_zero(msg.linear.x, msg.linear.y, msg.linear.z,
+                               msg.angular.x, msg.angular.y, msg.angular.z)
+        with self._cond:
+            self._round.twist(now, zero)
+            self._cond.notify_all()
+
+    def start_round(self):
+        """Forget what was heard; returns the new round (read it after :meth:`wait`)."""
+        with self._cond:
+            self._round = preempt.Round()
+            return self._round
+
+    def wait(self, ready, timeout, what):
+        """Wait until ``ready(round)``."""
+        deadline = time.monotonic() + timeout
+        with self._cond:
+            while not ready(self._round):
+                left = deadline - time.monotonic()
+                if left <= 0 or rospy.is_shutdown():
+                    raise Timeout('no %s within %.0f s' % (what, timeout))
+                self._cond.wait(min(left, 0.1))
+
+    def wait_publisher(self, timeout):
+        """Wait until a publisher of the topic is connected."""
+        deadline = time.monotonic() + timeout
+        while self._sub.get_num_connections() == 0:
+            if time.monotonic() > deadline:
+                raise Timeout('nobody publishes %s within %.0f s' % (self._sub.name, timeout))
+            time.sleep(0.05)
+
+    def close(self):
+        self._sub.unregister()

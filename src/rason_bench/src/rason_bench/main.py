@@ -3,7 +3,8 @@ their own and writes ``report.md``, ``results.json`` and PNG plots.
 
 Options: ``--seconds`` (length of one measured run, default 1), ``--quick`` (a subset of
 cells, fewer samples, for a smoke run), ``--only`` (cycle, latency, cpu, reaction, scale,
-behaviour; repeatable), ``--out`` (directory).
+preemption, behaviour; repeatable), ``--take-backs`` (rounds of the preemption part), ``--out``
+(directory).
 """
 import argparse
 import datetime
@@ -17,7 +18,10 @@ import time
 from rason_bench import plots, report, thesis
 
 #: The parts of a run, in the order they run (behaviour last: it starts the simulator).
-PARTS = ('cycle', 'latency', 'cpu', 'reaction', 'scale', 'behaviour')
+PARTS = ('cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'behaviour')
+TAKE_BACKS, TAKE_BACKS_QUICK = 200, 50
+#: motion_decomp's ~rate in the preemption part: the 50 Hz control period of the goal.
+CONTROL_RATE_HZ = 50.0
 
 
 def _parse(argv):
@@ -26,6 +30,9 @@ def _parse(argv):
     ap.add_argument('--quick', action='store_true', help='perceptions {1, 10} x {1, 50} Hz, fewer samples')
     ap.add_argument('--only', action='append', choices=PARTS,
                     help='run only these parts (repeatable)')
+    ap.add_argument('--take-backs', type=int, default=None,
+                    help='take-backs measured by the preemption part (default %d, %d with --quick)'
+                    % (TAKE_BACKS, TAKE_BACKS_QUICK))
     ap.add_argument('--out', default='results/bench', help='output directory')
     return ap.parse_args(argv)
 
@@ -55,13 +62,14 @@ def main(argv=None):
     rates = (1, 50) if args.quick else thesis.RATES_HZ
     pings, stamps = (100, 50) if args.quick else (1000, 300)
     wakeups, sim_window = (3, 5.0) if args.quick else (5, 10.0)
+    take_backs = args.take_backs or (TAKE_BACKS_QUICK if args.quick else TAKE_BACKS)
     results = {'machine': machine_facts(),
                'params': {'seconds': args.seconds, 'perceptions': list(perceptions), 'rates_hz': list(rates),
                           'pings': pings, 'stamps': stamps, 'stamp_period_s': 0.02, 'quick': args.quick,
                           'cpu_window_s': 5 * args.seconds, 'triggers': stamps,
                           'busy_intentions': report.BUSY_INTENTIONS, 'wakeups': wakeups, 'wakeup_gap_s': 2.0,
                           'sim_window_s': sim_window, 'rate_limit_seconds': 3.0, 'rate_limit_sent_hz': 50.0,
-                          'parts': parts}}
+                          'take_backs': take_backs, 'control_rate_hz': CONTROL_RATE_HZ, 'parts': parts}}
 
     def log(line):
         print(line, flush=True)
@@ -94,6 +102,8 @@ def main(argv=None):
             'reaction': [('reaction', 'reaction: perception -> action', lambda: experiments.reaction(
                 procs, harness, p['triggers'], 0.02, p['busy_intentions'], log))],
             'scale': [('scale', 'scale', scale)],
+            'preemption': [('preemption', 'preemption (motion_decomp at %g Hz)' % CONTROL_RATE_HZ,
+                            lambda: experiments.preemption(procs, harness, p['take_backs'], CONTROL_RATE_HZ, log))],
             'behaviour': [
                 ('behaviour.wakeup', 'behaviour: idle wake-up', lambda: behaviour.wakeup(
                     procs, harness, wakeups, p['wakeup_gap_s'], log)),

@@ -13,6 +13,9 @@ Cycle = namedtuple('Cycle', 'run iterations ms')
 RoundTrip = namedtuple('RoundTrip', 'run index ms')
 #: ``seen(Run, Seq, Ms)``: the percept stamp(Run, Seq, T) reached a plan Ms after T.
 Seen = namedtuple('Seen', 'run seq ms')
+#: ``took_back(Run, I, T)``: the agent took round I's motion back at T (``rason.time_ms``,
+#: read right before ``.drop_intention``).
+TookBack = namedtuple('TookBack', 'run index ms')
 
 #: ``react(Run, Seq, Stamp)``: the agent's action for the percept trigger(Run, Seq, Stamp);
 #: the harness times it on arrival (:func:`reaction`).
@@ -30,7 +33,7 @@ Ticked = namedtuple('Ticked', 'run agent seq ms')
 _REPORTS = {'cycle': (Cycle, (int, int, float)), 'rtt': (RoundTrip, (int, int, float)),
             'seen': (Seen, (int, int, float)), 'react': (Reacted, (int, int, float)),
             'spinning': (Spinning, (int, int)), 'spun': (Spun, (int, int, int)),
-            'ticked': (Ticked, (int, str, int, float))}
+            'ticked': (Ticked, (int, str, int, float)), 'took_back': (TookBack, (int, int, float))}
 
 #: Source of the harness's control percepts.
 CONTROL_SOURCE = 'bench_control'
@@ -111,6 +114,14 @@ def trigger_source(seq):
 def tick(run, seq):
     """Rate-limit percept: the agents report each update that reaches them."""
     return 'tick(%d,%d)' % (run, seq)
+def go_move(agent, run, index):
+    """Control percept: ``agent`` starts round ``index``'s ``move(3)`` (agents/preempt.asl)."""
+    return 'go_move(%s,%d,%d)' % (agent, run, index)
+
+
+def take_back(agent, run, index):
+    """Control percept: ``agent`` drops round ``index``'s motion and reports ``took_back``."""
+    return 'take_back(%s,%d,%d)' % (agent, run, index)
 
 
 def stamp(run, seq, now_ms):

@@ -22,6 +22,8 @@ RATE_LIMIT_PER_S = 5
 #: real-time factor above SIM_RTF_GOAL, each topic at least its rate.
 SIM_RTF_GOAL = 0.95
 SIM_RATE_GOALS_HZ = (('faulty odom', 48.0), ('helper odom', 48.0), ('camera', 9.5), ('vision', 9.0))
+#: Take-back -> zero twist on cmd_vel: one 50 Hz control period (20 ms) plus transport.
+PREEMPT_P99_GOAL_MS = 60.0
 
 
 def baseline_ms(mode_result):
@@ -76,6 +78,15 @@ def goals(results):
     out += _wakeup_goals(behaviour.get('wakeup'))
     out += _rate_limit_goals(behaviour.get('rate_limit'))
     out += _sim_goals(behaviour.get('sim'))
+    stop = results.get('preemption', {}).get('stop_ms')
+    if stop:
+        goal = ('preemption: take-back -> zero twist p99 <= %g ms (one 50 Hz control period plus transport)'
+                % PREEMPT_P99_GOAL_MS)
+        if stop['n']:
+            out.append((goal, '%.2f ms (%d take-backs)' % (stop['p99'], stop['n']),
+                        stop['p99'] <= PREEMPT_P99_GOAL_MS))
+        else:
+            out.append((goal, 'no take-back measured', False))
     return out
 
 
@@ -277,6 +288,24 @@ def behaviour_text(behaviour):
     return '\n'.join(out) + '\n'
 
 
+#: The preemption part's rows: key of its results, label.
+PREEMPTION_ROWS = (('stop_ms', 'take-back → zero twist on `cmd_vel`'),
+                   ('cancel_ms', 'take-back → `.cancel` heard on `jason/action`'),
+                   ('cancel_to_stop_ms', '`.cancel` heard → zero twist'))
+
+
+def preemption_table(preemption):
+    """Markdown: n, p50, p90, p99, max (ms) of each leg of the take-backs."""
+    lines = [_row(['', 'n', 'p50 ms', 'p90 ms', 'p99 ms', 'max ms']), _row(['---'] * 6)]
+    for key, label in PREEMPTION_ROWS:
+        s = preemption.get(key, {'n': 0})
+        if not s['n']:
+            lines.append(_row([label, '0', '', '', '', '']))
+            continue
+        lines.append(_row([label, '%d' % s['n']] + ['%.2f' % s[k] for k in ('p50', 'p90', 'p99', 'max')]))
+    return '\n'.join(lines) + '\n'
+
+
 def goals_table(results):
     lines = [_row(['goal', 'measured', 'met']), _row(['---'] * 3)]
     for goal, measured, met in goals(results):
@@ -324,6 +353,19 @@ def markdown(results):
     if 'scale' in results:
         out += ['## Scale: agents in one process, each hearing 10 perceptions × 10 Hz', '',
                 scale_table(results['scale'])]
+    if 'preemption' in results:
+        p = results['preemption']
+        out += ['## Preemption latency (loopback)', '',
+                'The agent (`agents/preempt.asl`) starts `move(3)`; once the motion is under way '
+                '(a non-zero twist on `cmd_vel`, plus a random 0–%g ms) the harness asks it to take '
+                'it back: it reads `rason.time_ms(T)` right before `.drop_intention`. Measured from T '
+                '(same monotonic clock) to the harness hearing the zero twist of the real `motion_decomp` '
+                'node (`~rate` %g Hz; a kinematic stand-in base, `bench_base`, integrates `cmd_vel` into '
+                '`odom` at %g Hz) and the bridge\'s `.cancel` on `jason/action`. %d unrecorded warm-up '
+                'take-backs first; %d motions ended before their take-back (not counted); %.0f s.'
+                % (1000 * p['max_delay_s'], p['control_rate_hz'], p['base_rate_hz'], p['warmup'],
+                   p['ended_early'], p['seconds']), '',
+                preemption_table(p)]
     if 'behaviour' in results:
         out += ['## Behaviour', '', behaviour_text(results['behaviour'])]
     if results.get('durations_s'):

@@ -91,7 +91,7 @@ class RasonMasNode(object):
             publish=self._action_pub.publish,
             connected=self._action_pub.get_num_connections,
             listed=self._listed_action_subscribers,
-            fail=lambda action, reason: self._bridge.actionFailed(action.agent, action.action_id, reason),
+            fail=self._action_not_sent,
             connect_wait=connect_wait)
         self._outbox_wakeup = threading.Event()
         self._connect_wait = connect_wait
@@ -101,6 +101,7 @@ class RasonMasNode(object):
         self.mas_id = rospy.get_name()
         self._incarnation = time.time_ns()
         self._bridge.setMasId(self.mas_id)
+        self._bridge.setIncarnation(self._incarnation)
         self._presence_period = presence_period
         self._presence_stop = threading.Event()
         self._announce_lock = threading.Lock()
@@ -116,6 +117,8 @@ class RasonMasNode(object):
         self._outbound_thread = None
         outbound = 'rason.bridge.Outbound$'
         self._action_item = jpype.JClass(outbound + 'Action')
+        self._cancel_item = jpype.JClass(outbound + 'Cancel')
+        self._events_sub = None
         self._message_item = jpype.JClass(outbound + 'AgentMessage')
         self._stop_item = jpype.JClass(outbound + 'Stop')
         self._bridge.attach()  # the agents' outbox and log are ours from now on
@@ -144,7 +147,7 @@ class RasonMasNode(object):
     def start(self):
         """Subscribe to the jason/* topics and start the agents' reasoning."""
         self._outbox.refresh_listed()
-        events_sub = rospy.Subscriber('jason/event', Event, self._on_event,
+        self._events_sub = events_sub = rospy.Subscriber('jason/event', Event, self._on_event,
                                       queue_size=None, tcp_nodelay=True)
         rospy.Subscriber('jason/perception', Perception, self._on_perception,
                          queue_size=100, tcp_nodelay=True)
@@ -161,6 +164,9 @@ class RasonMasNode(object):
         threading.Thread(target=self._presence_loop, name='rason_presence', daemon=True).start()
         self._bridge.tick(_ros_now_ns())  # the agents' clock is known before their first action
         rospy.Timer(rospy.Duration(0.05), self._on_tick)
+        # whatever an earlier run of this node left running stops, before the agents' first action
+        for agent in self._bridge.agentNames():
+            self._publish_cancel(str(agent), 0, Event.RESTART)
         self._mas.start()
 
     def stop(self, grace=0.5, join_timeout=3.0):
@@ -192,7 +198,9 @@ class RasonMasNode(object):
         self._bridge.perceive(msg.source, msg.perception, _ros_now_ns())
 
     def _on_event(self, msg):
-        self._bridge.event(msg.agent, msg.event_type, msg.parameters)  # parsed and checked in Java
+        # parsed and checked in Java; the publisher is the decomposer to watch after action_started
+        publisher = msg._connection_header.get('callerid', '') if msg._connection_header else ''
+        self._bridge.event(msg.agent, msg.event_type, msg.parameters, publisher)
 
     def _on_tick(self, _event):
         self._bridge.tick(_ros_now_ns())
@@ -231,6 +239,7 @@ class RasonMasNode(object):
                 next_announcement = now + self._presence_period
             try:
                 self._bridge.presenceTick(self._linked_processes())
+                self._bridge.decomposersTick(self._event_publishers())
             except Exception as e:
                 rospy.logerr_throttle(10, 'presence tick failed: %s', e)
             self._presence_stop.wait(_PRESENCE_TICK)
@@ -255,6 +264,12 @@ class RasonMasNode(object):
         """Node names our message publisher is connected to (rospy keeps them as endpoint ids)."""
         impl = self._message_pub.impl
         return [] if impl is None else [c.endpoint_id for c in list(impl.connections)]
+
+    def _event_publishers(self):
+        """Nodes whose jason/event link to us is up (a decomposer that died has none)."""
+        impl = self._events_sub.impl if self._events_sub is not None else None
+        return [] if impl is None else [c.header.get('callerid', '') for c in list(impl.connections)
+                                        if getattr(c, 'header', None)]
 
     def _linked(self, mas_id):
         impl = self._message_pub.impl
@@ -281,6 +296,8 @@ class RasonMasNode(object):
         if isinstance(item, self._action_item):
             self._publish_action(str(item.agent()), int(item.actionId()), str(item.action()),
                                  [str(p) for p in item.parameters()])
+        elif isinstance(item, self._cancel_item):
+            self._publish_cancel(str(item.agent()), int(item.actionId()), str(item.reason()))
         elif isinstance(item, self._message_item):
             self._publish_message(AgentMessage(
                 sender_mas=self.mas_id, sender=str(item.sender()), receiver_mas=str(item.receiverMas()),
@@ -299,6 +316,16 @@ class RasonMasNode(object):
                           tuple(parameters), self._action_topic)
             self._bridge.actionFailed(agent, action_id, Event.NO_DECOMPOSER)
         elif outcome == DEFERRED:
+            self._outbox_wakeup.set()
+
+    def _action_not_sent(self, action, reason):
+        if action.action != Action.CANCEL:  # a cancel nobody can hear has nothing left to stop
+            self._bridge.actionFailed(action.agent, action.action_id, reason)
+
+    def _publish_cancel(self, agent, action_id, reason):
+        # on jason/action, through the same outbox: it never overtakes the action it cancels
+        msg = Action(agent=agent, action_id=action_id, action=Action.CANCEL, parameters=[reason])
+        if self._outbox.submit(msg) == DEFERRED:
             self._outbox_wakeup.set()
 
     def _publish_message(self, msg):

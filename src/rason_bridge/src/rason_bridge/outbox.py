@@ -46,6 +46,10 @@ class ActionOutbox(object):
 
     def submit(self, action):
         """Publish now, hold, or refuse one action; returns SENT, DEFERRED or NO_DECOMPOSER."""
+        with self._lock:
+            if self._held:  # behind earlier held actions: never overtake them (a cancel follows its action)
+                self._held.append((self._clock(), action))
+                return DEFERRED
         connected = self._connected()
         if connected > 0 and connected >= self._listed_cache:
             self._publish(action)

@@ -12,7 +12,7 @@ import jason.asSyntax.Literal;
 import jason.infra.local.LocalAgArch;
 
 import rason.RosAgArch;
-import rason.action.ActionFeedback;
+import rason.action.ActionEvent;
 import rason.messaging.Fleet;
 import rason.messaging.Messages;
 import rason.messaging.WarnOnce;
@@ -38,11 +38,15 @@ public final class Bridge implements Fleet.Listener {
     private final Fleet fleet = new Fleet(logger, this);
     private final WarnOnce warned = new WarnOnce(logger);
     private final Object presencePushLock = new Object();
-    private int lastActionId = 0; // guarded by this
+    // Ids start at a random point of each run, so a restarted process (or a second one for the
+    // same agent name) does not reuse the ids a decomposer may still hold; 0 is never used
+    // (a cancel for id 0 means every action of the agent).
+    private int lastActionId = new java.security.SecureRandom().nextInt(1 << 30); // guarded by this
 
     private volatile long actionTimeoutNanos = 60_000_000_000L;
     private volatile long perceptionTtlNanos = 2_000_000_000L;
     private volatile long askTimeoutNanos = 60_000_000_000L;
+    private volatile long decomposerGraceNanos = 500_000_000L;
     private volatile boolean presenceBeliefs = true;
     private volatile String defaultPerceptionManager = PerceptionManagers.PER_SOURCE;
     private volatile String shutdownReason = null;
@@ -144,7 +148,8 @@ public final class Bridge implements Fleet.Listener {
     }
 
     public synchronized int nextActionId() {
-        return ++lastActionId;
+        lastActionId = lastActionId == Integer.MAX_VALUE ? 1 : lastActionId + 1;
+        return lastActionId;
     }
 
     // ---- agents ------------------------------------------------------------------------
@@ -206,22 +211,47 @@ public final class Bridge implements Fleet.Listener {
      * A rason_msgs/Event arrived. Events for agents not hosted here, of
      * unknown types or malformed are ignored with a log line.
      *
-     * @return true if it settled an action
+     * @param publisher the node that published it ("" if unknown): for action_started, the decomposer to watch
+     * @return true if it settled or started an action
      */
-    public boolean event(String agent, String eventType, String[] parameters) {
+    public boolean event(String agent, String eventType, String[] parameters, String publisher) {
         RosAgArch arch = registry.get(agent);
         if (arch == null) {
             warned.log("event:" + agent, Level.INFO, "ignoring events for agent '" + agent + "': not hosted here (logged once)");
             return false;
         }
-        ActionFeedback fb;
+        ActionEvent ev;
         try {
-            fb = ActionFeedback.parse(eventType, parameters);
+            ev = ActionEvent.parse(eventType, parameters);
         } catch (IllegalArgumentException e) {
             logger.warning("ignored event for " + agent + ": " + e.getMessage());
             return false;
         }
-        return arch.feedback(fb.actionId(), fb.result());
+        if (ev.started())
+            return publisher != null && !publisher.isEmpty() && arch.startedBy(ev.actionId(), publisher);
+        return arch.feedback(ev.actionId(), ev.result());
+    }
+
+    /** An event whose publisher is unknown. */
+    public boolean event(String agent, String eventType, String[] parameters) {
+        return event(agent, eventType, parameters, "");
+    }
+
+    /**
+     * Called every few tens of milliseconds with the nodes whose jason/event
+     * link is up: actions taken by a node that has been gone for longer than
+     * the grace fail decomposer_lost.
+     */
+    public void decomposersTick(String[] connected) {
+        java.util.Set<String> live = java.util.Set.of(connected);
+        long now = System.nanoTime();
+        for (RosAgArch arch : registry.all())
+            arch.decomposersTick(live, now, decomposerGraceNanos);
+    }
+
+    /** How long the decomposer that took an action may be unreachable before the action fails (wall clock). */
+    public void setDecomposerGraceNanos(long t) {
+        decomposerGraceNanos = t;
     }
 
     /** Ends an action with a result of the bridge's own (e.g. no_decomposer), from a thread of the node. */
@@ -254,6 +284,11 @@ public final class Bridge implements Fleet.Listener {
 
     public void setPresenceTimeoutNanos(long t) {
         fleet.setPresenceTimeoutNanos(t);
+    }
+
+    /** This process's start time as its presence announces it. */
+    public void setIncarnation(long t) {
+        fleet.setIncarnation(t);
     }
 
     /**
@@ -293,6 +328,11 @@ public final class Bridge implements Fleet.Listener {
             for (RosAgArch arch : registry.all())
                 arch.presenceUpdate(names);
         }
+    }
+
+    @Override
+    public void mustStop(String why) {
+        outbox.offer(new Outbound.Stop(1));
     }
 
     @Override

@@ -4,10 +4,14 @@ package rason.bridge;
  * What the agents hand to the rospy node: queued on the agent's thread by
  * {@link Outbox#offer}, published by a thread of the node.
  */
-public sealed interface Outbound permits Outbound.Action, Outbound.AgentMessage, Outbound.Stop {
+public sealed interface Outbound permits Outbound.Action, Outbound.Cancel, Outbound.AgentMessage, Outbound.Stop {
 
     /** A rason_msgs/Action for jason/action. */
     record Action(String agent, int actionId, String action, String[] parameters) implements Outbound {
+    }
+
+    /** A cancel for action actionId of agent (rason_msgs/Action CANCEL on jason/action, after the action). */
+    record Cancel(String agent, int actionId, String reason) implements Outbound {
     }
 
     /** A rason_msgs/AgentMessage for another process (receiverMas empty: every other process). */

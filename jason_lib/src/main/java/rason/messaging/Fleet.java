@@ -24,6 +24,9 @@ public final class Fleet {
 
         /** These agents' processes ended: answers they owe will never come. */
         void receiversLost(Collection<String> names);
+
+        /** This process must not go on (it duplicates an earlier one's agent in the same namespace). */
+        void mustStop(String why);
     }
 
     /** An incoming agent message that passed the checks. */
@@ -39,6 +42,8 @@ public final class Fleet {
     private final WarnOnce warned;
     private volatile String masId = "";
     private volatile long presenceTimeoutNanos = 2_000_000_000L;
+    private volatile long incarnation = 0;
+    private volatile boolean stopping = false;
 
     public Fleet(Logger logger, Listener listener) {
         this.logger = logger;
@@ -53,6 +58,11 @@ public final class Fleet {
 
     public String getMasId() {
         return masId;
+    }
+
+    /** This process's start time, as its presence announces it: the later of two duplicates stops. */
+    public void setIncarnation(long t) {
+        incarnation = t;
     }
 
     /** Silence after which another process counts as gone (wall clock). */
@@ -168,6 +178,12 @@ public final class Fleet {
         warned.warn("receiver:" + name, "dropped message " + what + ": no agent '" + name + "' here (logged once per name)");
     }
 
+    /** "/robot1" for "/robot1/rason_mas", "" for "/rason_mas". */
+    static String namespaceOf(String masId) {
+        int slash = masId.lastIndexOf('/');
+        return slash <= 0 ? "" : masId.substring(0, slash);
+    }
+
     private void apply(PresenceTable.Changes c) {
         if (c.isEmpty())
             return;
@@ -181,6 +197,15 @@ public final class Fleet {
             logger.info("presence: agent " + a + " is no longer reachable");
         if (!c.lost.isEmpty())
             listener.receiversLost(c.lost);
+        for (PresenceTable.LocalClash d : c.localClashes)
+            if (!stopping && namespaceOf(d.masId()).equals(namespaceOf(masId)) && d.incarnation() != 0
+                    && d.incarnation() < incarnation) {
+                stopping = true;
+                String why = "agent '" + d.agent() + "' is already hosted by " + d.masId() + " in the same namespace: two"
+                        + " processes would both take its feedback on jason/event, so this later one stops";
+                logger.severe(why);
+                listener.mustStop(why);
+            }
         if (c.reachabilityChanged())
             listener.reachableChanged();
     }

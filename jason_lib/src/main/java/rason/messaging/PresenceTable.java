@@ -35,14 +35,21 @@ public final class PresenceTable {
         public final List<String> events = new ArrayList<>();
         /** one line per name clash, the first time it is seen */
         public final List<String> clashes = new ArrayList<>();
+        /** agents hosted here that another process announces too, with that process's incarnation */
+        public final List<LocalClash> localClashes = new ArrayList<>();
 
         public boolean reachabilityChanged() {
             return !joined.isEmpty() || !left.isEmpty();
         }
 
         public boolean isEmpty() {
-            return joined.isEmpty() && left.isEmpty() && lost.isEmpty() && events.isEmpty() && clashes.isEmpty();
+            return joined.isEmpty() && left.isEmpty() && lost.isEmpty() && events.isEmpty() && clashes.isEmpty()
+                    && localClashes.isEmpty();
         }
+    }
+
+    /** An agent hosted here that another process (of incarnation, 0 if unknown) announces too. */
+    public record LocalClash(String agent, String masId, long incarnation) {
     }
 
     private static final class Peer {
@@ -218,6 +225,7 @@ public final class PresenceTable {
         for (Peer p : byOrder) {
             for (String a : p.agents) {
                 if (local.contains(a)) {
+                    c.localClashes.add(new LocalClash(a, p.masId, p.incarnation));
                     clash(a, "agent name '" + a + "' is hosted here and also announced by " + p.masId
                             + ": messages to '" + a + "' from this process stay here; give one of the robots an ~agent_prefix", c);
                 } else if (next.containsKey(a)) {

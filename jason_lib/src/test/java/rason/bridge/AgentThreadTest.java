@@ -147,8 +147,10 @@ class AgentThreadTest {
     void shutdownFailsPendingActionsAndLaterOnesAtOnce() throws Exception {
         RosAgArch arch = start("worker", WORKER + "+failed(_) <- move(2); +moved_after.\n"
                 + "-!g[error(E)] <- true.\n");
-        nextAction();
+        Outbound.Action a = nextAction();
         bridge.shutdown(Protocol.SHUTDOWN);
+        assertEquals(new Outbound.Cancel("worker", a.actionId(), Protocol.SHUTDOWN), bridge.outbox().take(WAIT_MS),
+                "the robot is told to stop it");
         await("-!work with shutdown", () -> believes(arch, "failed(shutdown)"));
         // the plan's next action failed at once (no intention waits), and nothing more was queued
         await("the -! plan's action ended", () -> pending(arch) == 0 && !arch.getTS().getC().hasRunningIntention());

@@ -8,23 +8,37 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
-class ActionFeedbackTest {
+class ActionEventTest {
 
     @Test
     void okWithItsId() {
-        assertEquals(new ActionFeedback(17, "OK"), ActionFeedback.parse("action_feedback", new String[] { "OK", "17" }));
+        assertEquals(new ActionEvent(false, 17, "OK"), ActionEvent.parse("action_feedback", new String[] { "OK", "17" }));
     }
 
     @Test
     void resultAndIdAreTrimmedAndExtraParametersIgnored() {
-        assertEquals(new ActionFeedback(3, "no_progress"),
-                ActionFeedback.parse("action_feedback", new String[] { " no_progress ", " 3", "extra" }));
+        assertEquals(new ActionEvent(false, 3, "no_progress"),
+                ActionEvent.parse("action_feedback", new String[] { " no_progress ", " 3", "extra" }));
+    }
+
+    @Test
+    void startedNamesItsAction() {
+        assertEquals(new ActionEvent(true, 5, null), ActionEvent.parse("action_started", new String[] { " 5 " }));
+    }
+
+    @Test
+    void startedWithoutAnIntegerIdIsRefused() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> ActionEvent.parse("action_started", new String[] { "x" }));
+        assertTrue(e.getMessage().contains("non-integer action id 'x'"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> ActionEvent.parse("action_started", new String[0]));
+        assertTrue(e.getMessage().contains("needs parameters [action_id]"), e.getMessage());
     }
 
     @Test
     void unknownEventTypeIsRefused() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> ActionFeedback.parse("status", new String[] { "OK", "1" }));
+                () -> ActionEvent.parse("status", new String[] { "OK", "1" }));
         assertTrue(e.getMessage().contains("unknown event type 'status'"), e.getMessage());
     }
 
@@ -40,13 +54,13 @@ class ActionFeedbackTest {
     void malformedParametersAreRefusedWithAReason(String result, String id, String why) {
         String[] parameters = id == null ? new String[] { result } : new String[] { result, id };
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> ActionFeedback.parse("action_feedback", parameters));
+                () -> ActionEvent.parse("action_feedback", parameters));
         assertTrue(e.getMessage().contains(why), e.getMessage());
     }
 
     @Test
     void noParametersAtAllIsRefused() {
-        assertThrows(IllegalArgumentException.class, () -> ActionFeedback.parse("action_feedback", new String[0]));
-        assertThrows(IllegalArgumentException.class, () -> ActionFeedback.parse("action_feedback", null));
+        assertThrows(IllegalArgumentException.class, () -> ActionEvent.parse("action_feedback", new String[0]));
+        assertThrows(IllegalArgumentException.class, () -> ActionEvent.parse("action_feedback", null));
     }
 }

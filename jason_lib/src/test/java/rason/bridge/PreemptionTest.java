@@ -1,0 +1,196 @@
+package rason.bridge;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.function.BooleanSupplier;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+import jason.asSemantics.Unifier;
+import jason.asSyntax.ASSyntax;
+import rason.RosAgArch;
+import rason.infra.RasonLocalMAS;
+
+/**
+ * An agent that changes its mind stops what it set in motion: every Jason
+ * construct that makes an intention stop waiting for its action queues a
+ * cancel for that action, right after the action, and the agent's next action
+ * goes out at once. Real agents; nobody drains the outbox but the test.
+ */
+class PreemptionTest {
+
+    private static final long SECOND = 1_000_000_000L;
+    private static final long WAIT_MS = 10_000;
+
+    private final Bridge bridge = Bridge.get();
+    private RasonLocalMAS mas;
+
+    @TempDir
+    Path dir;
+
+    private static final String MOVER = """
+            !go.
+            +!go <- move(3); +arrived.
+            -!go[R|Rest] : .member(suspended, [R|Rest]) <- +saw_suspended.
+            -!go <- +go_failed.
+            +next <- turn(90); +turned.
+            +resume_now <- .resume(go).
+            """;
+
+    private RosAgArch start(String takeBack) throws Exception {
+        Files.writeString(dir.resolve("mover.asl"), MOVER + "+stop <- " + takeBack + ".\n");
+        Files.writeString(dir.resolve("test.mas2j"), "MAS test { agents: mover; }");
+        bridge.attach();
+        bridge.setActionTimeoutNanos(60 * SECOND);
+        bridge.tick(100 * SECOND);
+        mas = new RasonLocalMAS();
+        mas.load(dir.resolve("test.mas2j").toString());
+        mas.create();
+        mas.start();
+        RosAgArch arch = bridge.registry().get("mover");
+        assertNotNull(arch);
+        return arch;
+    }
+
+    @AfterEach
+    void stop() throws Exception {
+        bridge.shutdown(Protocol.SHUTDOWN);
+        if (mas != null)
+            assertTrue(mas.stopAgents(5000));
+        bridge.detach();
+        while (bridge.outbox().poll() != null) {
+            // nothing of this test reaches the next one
+        }
+    }
+
+    private static boolean believes(RosAgArch arch, String literal) {
+        try {
+            return arch.getTS().getAg().believes(ASSyntax.parseLiteral(literal), new Unifier());
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    private static void await(String what, BooleanSupplier condition) throws InterruptedException {
+        long deadline = System.currentTimeMillis() + WAIT_MS;
+        while (!condition.getAsBoolean()) {
+            if (System.currentTimeMillis() > deadline)
+                throw new AssertionError("timed out waiting for " + what);
+            Thread.sleep(5);
+        }
+    }
+
+    private <T extends Outbound> T next(Class<T> kind) throws InterruptedException {
+        Outbound item = bridge.outbox().take(WAIT_MS);
+        assertNotNull(item, "nothing was queued");
+        return assertInstanceOf(kind, item);
+    }
+
+    private void perceive(String... literals) {
+        bridge.perceive("test", literals, 100 * SECOND);
+    }
+
+    private boolean feedback(int id, String result) {
+        return bridge.event("mover", Protocol.ACTION_FEEDBACK, new String[] { result, "" + id });
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = { ".drop_intention(go)", ".drop_desire(go)", ".drop_all_intentions", ".drop_all_desires",
+            ".fail_goal(go)", ".succeed_goal(go)" })
+    void aTakenBackActionIsCancelledAndTheNextOneGoesOutAtOnce(String takeBack) throws Exception {
+        RosAgArch arch = start(takeBack);
+        Outbound.Action move = next(Outbound.Action.class);
+        assertEquals("move", move.action());
+        perceive("stop");
+        assertEquals(new Outbound.Cancel("mover", move.actionId(), Protocol.DROPPED), next(Outbound.Cancel.class));
+        assertEquals(0, arch.pendingActions());
+        if (takeBack.startsWith(".fail_goal"))
+            await("-!go runs", () -> believes(arch, "go_failed"));
+        // the decomposer's answer to the cancel, and any late one, change nothing
+        assertFalse(feedback(move.actionId(), Protocol.CANCELLED));
+        assertFalse(feedback(move.actionId(), Protocol.OK));
+        perceive("stop", "next");
+        Outbound.Action turn = next(Outbound.Action.class);
+        assertEquals("turn", turn.action());
+        assertTrue(feedback(turn.actionId(), Protocol.OK));
+        await("the next action's intention goes on", () -> believes(arch, "turned"));
+        assertFalse(believes(arch, "arrived"));
+    }
+
+    @Test
+    void suspendStopsTheActionAndResumeSeesItFailSuspended() throws Exception {
+        RosAgArch arch = start(".suspend(go)");
+        Outbound.Action move = next(Outbound.Action.class);
+        perceive("stop");
+        assertEquals(new Outbound.Cancel("mover", move.actionId(), Protocol.SUSPENDED), next(Outbound.Cancel.class));
+        assertFalse(feedback(move.actionId(), Protocol.CANCELLED), "the answer to the cancel does not end the suspended intention");
+        bridge.tick(1000 * SECOND); // no timeout while suspended: the agent, not the robot, must act
+        perceive("stop", "next");
+        Outbound.Action turn = next(Outbound.Action.class);
+        assertTrue(feedback(turn.actionId(), Protocol.OK));
+        await("other intentions run meanwhile", () -> believes(arch, "turned"));
+        assertFalse(believes(arch, "saw_suspended"));
+        assertFalse(believes(arch, "go_failed"));
+        perceive("stop", "next", "resume_now");
+        await(".resume(go): the action failed 'suspended'", () -> believes(arch, "saw_suspended"));
+        assertEquals(0, arch.pendingActions());
+        assertNull(bridge.outbox().poll(), "no second cancel");
+    }
+
+    @Test
+    void theTimeoutCancelsTheAction() throws Exception {
+        RosAgArch arch = start("true");
+        bridge.setActionTimeoutNanos(2 * SECOND);
+        Outbound.Action move = next(Outbound.Action.class);
+        bridge.tick(103 * SECOND);
+        assertEquals(new Outbound.Cancel("mover", move.actionId(), Protocol.TIMEOUT), next(Outbound.Cancel.class));
+        await("-!go with timeout", () -> believes(arch, "go_failed"));
+        assertFalse(feedback(move.actionId(), Protocol.OK), "late feedback after the timeout");
+    }
+
+    @Test
+    void shutdownCancelsWhatIsPending() throws Exception {
+        start("true");
+        Outbound.Action move = next(Outbound.Action.class);
+        bridge.shutdown(Protocol.SHUTDOWN);
+        assertEquals(new Outbound.Cancel("mover", move.actionId(), Protocol.SHUTDOWN), next(Outbound.Cancel.class));
+    }
+
+    @Test
+    void anActionWhoseDecomposerWentAwayFailsAndIsCancelled() throws Exception {
+        RosAgArch arch = start("true");
+        bridge.setDecomposerGraceNanos(0);
+        Outbound.Action move = next(Outbound.Action.class);
+        assertTrue(bridge.event("mover", Protocol.ACTION_STARTED, new String[] { "" + move.actionId() }, "/motion_decomp"));
+        bridge.decomposersTick(new String[] { "/motion_decomp", "/other" });
+        bridge.decomposersTick(new String[] { "/motion_decomp" });
+        assertEquals(1, arch.pendingActions(), "its decomposer is still there");
+        bridge.decomposersTick(new String[] { "/other" }); // first seen missing
+        Thread.sleep(1);
+        bridge.decomposersTick(new String[] { "/other" });
+        assertEquals(new Outbound.Cancel("mover", move.actionId(), Protocol.DECOMPOSER_LOST), next(Outbound.Cancel.class));
+        await("-!go with decomposer_lost", () -> believes(arch, "go_failed"));
+    }
+
+    @Test
+    void anActionNobodyClaimedIsLeftToItsTimeout() throws Exception {
+        RosAgArch arch = start("true");
+        bridge.setDecomposerGraceNanos(0);
+        next(Outbound.Action.class);
+        bridge.decomposersTick(new String[0]);
+        Thread.sleep(1);
+        bridge.decomposersTick(new String[0]);
+        assertEquals(1, arch.pendingActions());
+    }
+}

@@ -1,0 +1,22 @@
+"""run_bench's options."""
+import pytest
+
+from rason_bench import main
+
+
+def test_every_part_runs_by_default_and_preemption_can_run_alone():
+    assert set(main.PARTS) == {'cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'behaviour'}
+    assert main.PARTS[-1] == 'behaviour'  # it starts the simulator and sets /use_sim_time
+    assert main._parse(['--only', 'preemption']).only == ['preemption']
+    assert main._parse([]).only is None
+
+
+def test_take_backs_option():
+    assert main._parse([]).take_backs is None
+    assert main._parse(['--take-backs', '30']).take_backs == 30
+    with pytest.raises(SystemExit):
+        main._parse(['--only', 'preempt'])
+
+
+def test_control_rate_is_the_goals_50_hz():
+    assert main.CONTROL_RATE_HZ == 50.0
