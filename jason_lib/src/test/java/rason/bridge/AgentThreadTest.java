@@ -2,11 +2,8 @@ package rason.bridge;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertInstanceOf;
-import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.function.BooleanSupplier;
 
@@ -14,10 +11,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-import jason.asSemantics.Unifier;
-import jason.asSyntax.ASSyntax;
 import rason.RosAgArch;
-import rason.infra.RasonLocalMAS;
 
 /**
  * Real Jason agents with RosAgArch and nobody draining the outbox — as if the
@@ -27,62 +21,34 @@ import rason.infra.RasonLocalMAS;
  */
 class AgentThreadTest {
 
-    private static final long SECOND = 1_000_000_000L;
-    private static final long WAIT_MS = 10_000;
+    private static final long SECOND = RunningAgents.SECOND;
+    private static final long WAIT_MS = RunningAgents.WAIT_MS;
 
     private final Bridge bridge = Bridge.get();
-    private RasonLocalMAS mas;
+    private final RunningAgents agents = new RunningAgents();
 
     @TempDir
     Path dir;
 
     private RosAgArch start(String agent, String program) throws Exception {
-        Files.writeString(dir.resolve(agent + ".asl"), program);
-        Files.writeString(dir.resolve("test.mas2j"), "MAS test { agents: " + agent + "; }");
-        bridge.attach();
-        bridge.setActionTimeoutNanos(60 * SECOND);
-        bridge.tick(100 * SECOND);
-        mas = new RasonLocalMAS();
-        mas.load(dir.resolve("test.mas2j").toString());
-        mas.create();
-        mas.start();
-        RosAgArch arch = bridge.registry().get(agent);
-        assertNotNull(arch, "agent " + agent + " registered");
-        return arch;
+        return agents.start(dir, agent, program);
     }
 
     @AfterEach
     void stop() throws Exception {
-        bridge.shutdown(Protocol.SHUTDOWN);
-        if (mas != null)
-            assertTrue(mas.stopAgents(5000), "agent threads end");
-        bridge.detach();
-        while (bridge.outbox().poll() != null) {
-            // nothing of this test reaches the next one
-        }
+        agents.stop();
     }
 
     private static boolean believes(RosAgArch arch, String literal) {
-        try {
-            return arch.getTS().getAg().believes(ASSyntax.parseLiteral(literal), new Unifier());
-        } catch (Exception e) {
-            throw new IllegalStateException(e);
-        }
+        return RunningAgents.believes(arch, literal);
     }
 
     private static void await(String what, BooleanSupplier condition) throws InterruptedException {
-        long deadline = System.currentTimeMillis() + WAIT_MS;
-        while (!condition.getAsBoolean()) {
-            if (System.currentTimeMillis() > deadline)
-                throw new AssertionError("timed out waiting for " + what);
-            Thread.sleep(5);
-        }
+        RunningAgents.await(what, condition);
     }
 
     private Outbound.Action nextAction() throws InterruptedException {
-        Outbound item = bridge.outbox().take(WAIT_MS);
-        assertNotNull(item, "an action was queued");
-        return assertInstanceOf(Outbound.Action.class, item);
+        return agents.next(Outbound.Action.class);
     }
 
     private static final String WORKER = """

@@ -2,12 +2,9 @@ package rason.bridge;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertInstanceOf;
-import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.function.BooleanSupplier;
 
@@ -17,10 +14,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
-import jason.asSemantics.Unifier;
-import jason.asSyntax.ASSyntax;
 import rason.RosAgArch;
-import rason.infra.RasonLocalMAS;
 
 /**
  * An agent that changes its mind stops what it set in motion: every Jason
@@ -30,11 +24,11 @@ import rason.infra.RasonLocalMAS;
  */
 class PreemptionTest {
 
-    private static final long SECOND = 1_000_000_000L;
-    private static final long WAIT_MS = 10_000;
+    private static final long SECOND = RunningAgents.SECOND;
+    private static final long WAIT_MS = RunningAgents.WAIT_MS;
 
     private final Bridge bridge = Bridge.get();
-    private RasonLocalMAS mas;
+    private final RunningAgents agents = new RunningAgents();
 
     @TempDir
     Path dir;
@@ -49,52 +43,24 @@ class PreemptionTest {
             """;
 
     private RosAgArch start(String takeBack) throws Exception {
-        Files.writeString(dir.resolve("mover.asl"), MOVER + "+stop <- " + takeBack + ".\n");
-        Files.writeString(dir.resolve("test.mas2j"), "MAS test { agents: mover; }");
-        bridge.attach();
-        bridge.setActionTimeoutNanos(60 * SECOND);
-        bridge.tick(100 * SECOND);
-        mas = new RasonLocalMAS();
-        mas.load(dir.resolve("test.mas2j").toString());
-        mas.create();
-        mas.start();
-        RosAgArch arch = bridge.registry().get("mover");
-        assertNotNull(arch);
-        return arch;
+        return agents.start(dir, "mover", MOVER + "+stop <- " + takeBack + ".\n");
     }
 
     @AfterEach
     void stop() throws Exception {
-        bridge.shutdown(Protocol.SHUTDOWN);
-        if (mas != null)
-            assertTrue(mas.stopAgents(5000));
-        bridge.detach();
-        while (bridge.outbox().poll() != null) {
-            // nothing of this test reaches the next one
-        }
+        agents.stop();
     }
 
     private static boolean believes(RosAgArch arch, String literal) {
-        try {
-            return arch.getTS().getAg().believes(ASSyntax.parseLiteral(literal), new Unifier());
-        } catch (Exception e) {
-            throw new IllegalStateException(e);
-        }
+        return RunningAgents.believes(arch, literal);
     }
 
     private static void await(String what, BooleanSupplier condition) throws InterruptedException {
-        long deadline = System.currentTimeMillis() + WAIT_MS;
-        while (!condition.getAsBoolean()) {
-            if (System.currentTimeMillis() > deadline)
-                throw new AssertionError("timed out waiting for " + what);
-            Thread.sleep(5);
-        }
+        RunningAgents.await(what, condition);
     }
 
     private <T extends Outbound> T next(Class<T> kind) throws InterruptedException {
-        Outbound item = bridge.outbox().take(WAIT_MS);
-        assertNotNull(item, "nothing was queued");
-        return assertInstanceOf(kind, item);
+        return agents.next(kind);
     }
 
     private void perceive(String... literals) {

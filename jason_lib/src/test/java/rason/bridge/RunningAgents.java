@@ -1,0 +1,79 @@
+package rason.bridge;
+
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.function.BooleanSupplier;
+
+import jason.asSemantics.Unifier;
+import jason.asSyntax.ASSyntax;
+import rason.RosAgArch;
+import rason.infra.RasonLocalMAS;
+
+/**
+ * Real Jason agents on the bridge for a test, with nobody draining the outbox
+ * but the test itself: start one agent from its program, look into its
+ * beliefs, wait for a condition, and stop everything so that nothing of one
+ * test reaches the next.
+ */
+final class RunningAgents {
+
+    static final long SECOND = 1_000_000_000L;
+    static final long WAIT_MS = 10_000;
+
+    private final Bridge bridge = Bridge.get();
+    private RasonLocalMAS mas;
+
+    /** Starts agent with program (in dir) at ROS time 100 s with a 60 s action timeout. */
+    RosAgArch start(Path dir, String agent, String program) throws Exception {
+        Files.writeString(dir.resolve(agent + ".asl"), program);
+        Files.writeString(dir.resolve("test.mas2j"), "MAS test { agents: " + agent + "; }");
+        bridge.attach();
+        bridge.setActionTimeoutNanos(60 * SECOND);
+        bridge.tick(100 * SECOND);
+        mas = new RasonLocalMAS();
+        mas.load(dir.resolve("test.mas2j").toString());
+        mas.create();
+        mas.start();
+        RosAgArch arch = bridge.registry().get(agent);
+        assertNotNull(arch, "agent " + agent + " registered");
+        return arch;
+    }
+
+    void stop() throws Exception {
+        bridge.shutdown(Protocol.SHUTDOWN);
+        if (mas != null)
+            assertTrue(mas.stopAgents(5000), "agent threads end");
+        bridge.detach();
+        while (bridge.outbox().poll() != null) {
+            // nothing of this test reaches the next one
+        }
+    }
+
+    static boolean believes(RosAgArch arch, String literal) {
+        try {
+            return arch.getTS().getAg().believes(ASSyntax.parseLiteral(literal), new Unifier());
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    static void await(String what, BooleanSupplier condition) throws InterruptedException {
+        long deadline = System.currentTimeMillis() + WAIT_MS;
+        while (!condition.getAsBoolean()) {
+            if (System.currentTimeMillis() > deadline)
+                throw new AssertionError("timed out waiting for " + what);
+            Thread.sleep(5);
+        }
+    }
+
+    /** The next item the agents queued for ROS, of the given kind. */
+    <T extends Outbound> T next(Class<T> kind) throws InterruptedException {
+        Outbound item = bridge.outbox().take(WAIT_MS);
+        assertNotNull(item, "nothing was queued");
+        return assertInstanceOf(kind, item);
+    }
+}
