@@ -56,13 +56,16 @@ class RasonMasNode(object):
     :param ask_timeout: seconds (ROS time) a synchronous ask to a remote agent may wait; 0 disables
     :param agent_prefix: prepended to every agent name of the project
     :param perception_manager: default perception strategy (``per_source``, ``accumulate`` or a class)
+    :param decomposer_grace: seconds (wall clock) the decomposer that took an action may be
+        unreachable before the action fails ``decomposer_lost``
     :raises ValueError: a parameter that cannot be used (the message says why)
     """
 
     def __init__(self, action_timeout=60.0, perception_ttl=2.0, connect_wait=2.0,
                  messages_topic='/rason/messages', presence_topic='/rason/presence',
                  presence_period=0.5, presence_timeout=2.0, presence_beliefs=True,
-                 ask_timeout=60.0, agent_prefix='', perception_manager='per_source'):
+                 ask_timeout=60.0, agent_prefix='', perception_manager='per_source',
+                 decomposer_grace=0.5):
         import jpype  # the JVM is started by main() before this point
         self._jpype = jpype
         self._bridge = jpype.JClass('rason.bridge.Bridge').get()
@@ -73,6 +76,9 @@ class RasonMasNode(object):
                              % (presence_timeout, presence_period))
         self._bridge.setPresenceTimeoutNanos(int(presence_timeout * 1e9))
         self._bridge.setAskTimeoutNanos(int(ask_timeout * 1e9))
+        if decomposer_grace < 0:
+            raise ValueError('decomposer_grace must be 0 s or more, not %s' % decomposer_grace)
+        self._bridge.setDecomposerGraceNanos(int(decomposer_grace * 1e9))
         self._bridge.setPresenceBeliefs(bool(presence_beliefs))
         try:
             self._bridge.setDefaultPerceptionManager(perception_manager)
@@ -418,7 +424,8 @@ def main(argv=None):
     ``agent_prefix`` (str, ''), ``messages_topic`` (str, /rason/messages),
     ``presence_topic`` (str, /rason/presence), ``presence_period`` (float s, 0.5),
     ``presence_timeout`` (float s, 2), ``presence_beliefs`` (bool, true),
-    ``ask_timeout`` (float s, 60; 0 disables), ``perception_manager`` (str, per_source).
+    ``ask_timeout`` (float s, 60; 0 disables), ``perception_manager`` (str, per_source),
+    ``decomposer_grace`` (float s, 0.5).
     Publishes the hosted agents' names on the ``~agents`` parameter.
     """
     args = rospy.myargv(argv if argv is not None else sys.argv)
@@ -443,7 +450,8 @@ def main(argv=None):
                             presence_beliefs=rospy.get_param('~presence_beliefs', True),
                             ask_timeout=float(rospy.get_param('~ask_timeout', 60.0)),
                             agent_prefix=str(rospy.get_param('~agent_prefix', '')),
-                            perception_manager=str(rospy.get_param('~perception_manager', 'per_source')))
+                            perception_manager=str(rospy.get_param('~perception_manager', 'per_source')),
+                            decomposer_grace=float(rospy.get_param('~decomposer_grace', 0.5)))
     except ValueError as e:
         rospy.logfatal('bad parameter: %s', e)
         return 1
