@@ -11,7 +11,6 @@ import jason.JasonException;
 import jason.ReceiverNotFoundException;
 import jason.architecture.AgArch;
 import jason.asSemantics.ActionExec;
-import jason.asSemantics.CircumstanceListener;
 import jason.asSemantics.Intention;
 import jason.asSemantics.Message;
 import jason.asSemantics.TransitionSystem;
@@ -21,9 +20,9 @@ import jason.asSyntax.ListTerm;
 import jason.asSyntax.Literal;
 import jason.asSyntax.Structure;
 import jason.asSyntax.Term;
-import jason.asSyntax.Trigger;
 
 import rason.action.ActionTable;
+import rason.action.AgentActions;
 import rason.action.ActionText;
 import rason.bridge.AgentRegistry;
 import rason.bridge.Bridge;
@@ -39,7 +38,8 @@ import rason.perception.SelectivePerception;
 /**
  * Agent architecture of thesis §5.2, a link in Jason's AgArch chain that only
  * overrides Jason's hooks and hands each concern to its own class: actions to
- * an {@link ActionTable} (out through the bridge's {@link rason.bridge.Outbox}),
+ * {@link AgentActions} (out through the bridge's {@link rason.bridge.Outbox}, taken back
+ * when the agent changes its mind),
  * perception to the agent's {@link PerceptionManager}, asks to agents of other
  * processes to {@link RemoteAsks}. ROS threads only record and wake the agent;
  * everything that touches Jason's state runs on the agent's thread, and that
@@ -48,7 +48,8 @@ import rason.perception.SelectivePerception;
 public class RosAgArch extends AgArch {
 
     private final Bridge bridge = Bridge.get();
-    private final ActionTable<ActionExec> actions = new ActionTable<>(bridge::nextActionId);
+    private final AgentActions actions = new AgentActions(bridge::nextActionId, bridge.outbox(), this::getAgName,
+            this::dataArrived);
     private final RemoteAsks asks = new RemoteAsks();
     private volatile PerceptionManager perception = new SelectivePerception(new PerSourcePerception(), null);
     private volatile String failAsksReason = null; // set at shutdown
@@ -69,7 +70,7 @@ public class RosAgArch extends AgArch {
         }
         if (!PerceptionManagers.PER_SOURCE.equals(perception.toString()))
             Bridge.log(Level.INFO, "[" + getAgName() + "] perception: " + perception);
-        getTS().getC().addEventListener(new TakeBack());
+        getTS().getC().addEventListener(actions.listener());
         bridge.register(this);
     }
 
@@ -93,56 +94,25 @@ public class RosAgArch extends AgArch {
     @Override
     public void act(ActionExec action) {
         String stopping = bridge.shutdownReason();
-        if (stopping != null) {
+        if (stopping != null)
             complete(action, stopping);
-            return;
-        }
-        Structure term = action.getActionTerm();
-        int id = actions.start(action, bridge.clock().now()); // before queueing: feedback may come back at once
-        Outbound.Action out = new Outbound.Action(getAgName(), id, term.getFunctor(), ActionText.parametersOf(term));
-        if (!bridge.outbox().offer(out)
-                && actions.feedback(id, Protocol.BRIDGE_ERROR) == ActionTable.FeedbackOutcome.SETTLED) {
-            Bridge.log(Level.SEVERE, "[" + getAgName() + "] could not publish " + term + ": the bridge is not running");
-            dataArrived();
-        }
+        else
+            actions.start(action, bridge.clock().now());
     }
 
-    /**
-     * Feedback for one of this agent's actions (from a ROS thread).
-     *
-     * @return false if no action with that id is pending (logged)
-     */
+    /** Feedback for one of this agent's actions (from a ROS thread); false if none such is pending. */
     public boolean feedback(int actionId, String result) {
-        switch (actions.feedback(actionId, result)) {
-        case SETTLED:
-            dataArrived();
-            return true;
-        case AFTER_CANCEL:
-            Bridge.log(Level.FINE, "[" + getAgName() + "] feedback '" + result + "' for action id " + actionId
-                    + " after it was taken back: ignored");
-            return false;
-        default:
-            Bridge.log(Level.INFO, "[" + getAgName() + "] ignored feedback '" + result + "' for action id " + actionId
-                    + ": no such action pending");
-            return false;
-        }
+        return actions.feedback(actionId, result);
     }
 
-    /** A decomposer said it took action actionId (from a ROS thread): its link is watched from now on. */
+    /** A decomposer said it took action actionId (from a ROS thread). */
     public boolean startedBy(int actionId, String decomposer) {
         return actions.startedBy(actionId, decomposer);
     }
 
-    /** Periodic: fails the actions whose decomposer went away, and stops them should it come back. */
+    /** Periodic: actions whose decomposer went away fail decomposer_lost. */
     public void decomposersTick(Set<String> connected, long nowNanos, long graceNanos) {
-        List<ActionTable.Taken<ActionExec>> lost = actions.decomposersLost(connected, nowNanos, graceNanos,
-                Protocol.DECOMPOSER_LOST);
-        if (!lost.isEmpty()) {
-            Bridge.log(Level.WARNING, "[" + getAgName() + "] " + describe(lost) + " failed " + Protocol.DECOMPOSER_LOST
-                    + ": the node that took it went away");
-            cancel(lost, Protocol.DECOMPOSER_LOST);
-            dataArrived();
-        }
+        actions.decomposersTick(connected, nowNanos, graceNanos);
     }
 
     /** Actions still waiting for their feedback. */
@@ -152,7 +122,7 @@ public class RosAgArch extends AgArch {
 
     /** The node stops: pending actions fail with reason and the robot is told to stop them; asks fail too. */
     public void failPending(String reason) {
-        cancel(actions.failAll(reason), reason);
+        actions.failAll(reason);
         failAsksReason = reason;
         dataArrived();
     }
@@ -160,92 +130,16 @@ public class RosAgArch extends AgArch {
     /** Periodic, with the ROS time: perception expiry, action and ask timeouts. */
     public void tick(long nowNanos, long actionTimeoutNanos, long ttlNanos) {
         boolean wake = perception.expire(nowNanos, ttlNanos);
-        List<ActionTable.Taken<ActionExec>> late = actions.expire(nowNanos, actionTimeoutNanos, Protocol.TIMEOUT);
-        cancel(late, Protocol.TIMEOUT);
-        wake |= !late.isEmpty();
+        wake |= actions.expire(nowNanos, actionTimeoutNanos);
         wake |= asks.due(nowNanos);
         if (wake)
             dataArrived();
     }
 
-    /**
-     * Jason's pending actions are the truth: one of ours Jason no longer waits
-     * for was taken back by a construct no listener reports (.succeed_goal of
-     * an intention's last goal removes the pending action and nothing else).
-     * Runs on the agent's thread at the start of a cycle and before it sleeps.
-     */
-    private void takeBackOrphans() {
-        if (actions.pendingCount() == 0)
-            return;
-        Map<Integer, ActionExec> waiting = getTS().getC().getPendingActions();
-        List<ActionTable.Taken<ActionExec>> taken = actions.cancel(a -> waiting.get(a.getIntention().getId()) != a);
-        if (!taken.isEmpty()) {
-            Bridge.log(Level.FINE, "[" + getAgName() + "] took back " + describe(taken) + ": no longer pending in Jason");
-            cancel(taken, Protocol.DROPPED);
-        }
-    }
-
-    /** Tells the robot to stop these actions (a cancel follows each on jason/action). */
-    private void cancel(List<ActionTable.Taken<ActionExec>> taken, String reason) {
-        for (ActionTable.Taken<ActionExec> t : taken)
-            bridge.outbox().offer(new Outbound.Cancel(getAgName(), t.id(), reason));
-    }
-
-    private static String describe(List<ActionTable.Taken<ActionExec>> taken) {
-        List<String> out = new ArrayList<>();
-        for (ActionTable.Taken<ActionExec> t : taken)
-            out.add(t.action().getActionTerm() + " (id " + t.id() + ")");
-        return String.join(", ", out);
-    }
-
-    /**
-     * Jason's hooks for an agent that changes its mind (circumstance listener,
-     * called on the agent's thread): whenever an intention stops waiting for
-     * its action for another reason than the action's feedback, the robot is
-     * told to stop that action.
-     */
-    private final class TakeBack implements CircumstanceListener {
-
-        private static final long serialVersionUID = 1L;
-
-        /** .drop_intention, .drop_desire, .drop_all_intentions/desires: the intention is gone. */
-        @Override
-        public void intentionDropped(Intention i) {
-            takeBack(i, Protocol.DROPPED);
-        }
-
-        /** .succeed_goal and .fail_goal take an intention out of its action and resume it. */
-        @Override
-        public void intentionExecuting(Intention i, Term reason) {
-            takeBack(i, Protocol.DROPPED);
-        }
-
-        /** .suspend: the robot stops; the action stays pending until .resume, which sees it fail 'suspended'. */
-        @Override
-        public void intentionSuspended(Trigger t, Intention i, Term reason) {
-            List<ActionTable.Taken<ActionExec>> held = actions.hold(a -> a.getIntention().getId() == i.getId());
-            cancel(held, Protocol.SUSPENDED);
-        }
-
-        @Override
-        public void intentionResumed(Intention i, Term reason) {
-            if (actions.release(a -> a.getIntention().getId() == i.getId(), Protocol.SUSPENDED))
-                dataArrived();
-        }
-
-        private void takeBack(Intention i, String reason) {
-            List<ActionTable.Taken<ActionExec>> taken = actions.cancel(a -> a.getIntention().getId() == i.getId());
-            if (!taken.isEmpty()) {
-                Bridge.log(Level.FINE, "[" + getAgName() + "] took back " + describe(taken) + ": " + reason);
-                cancel(taken, reason);
-            }
-        }
-    }
-
     @Override
     public void reasoningCycleStarting() {
         newData = false;
-        takeBackOrphans();
+        actions.takeBackOrphans(getTS().getC().getPendingActions());
         for (ActionTable.Settled<ActionExec> s : actions.takeSettled())
             complete(s.action(), s.result());
         settleRemoteAsks();
@@ -315,7 +209,7 @@ public class RosAgArch extends AgArch {
 
     @Override
     public boolean canSleep() {
-        takeBackOrphans();
+        actions.takeBackOrphans(getTS().getC().getPendingActions());
         return !newData && !actions.hasSettled() && !asks.hasLost() && super.canSleep();
     }
 
