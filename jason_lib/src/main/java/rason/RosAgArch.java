@@ -27,6 +27,7 @@ import rason.action.ActionTable;
 import rason.action.ActionText;
 import rason.bridge.AgentRegistry;
 import rason.bridge.Bridge;
+import rason.bridge.InputLimits;
 import rason.bridge.Outbound;
 import rason.bridge.Protocol;
 import rason.messaging.Messages;
@@ -122,8 +123,8 @@ public class RosAgArch extends AgArch {
                     + " after it was taken back: ignored");
             return false;
         default:
-            Bridge.log(Level.INFO, "[" + getAgName() + "] ignored feedback '" + result + "' for action id " + actionId
-                    + ": no such action pending");
+            bridge.logLimited(Bridge.IGNORED_EVENT, Level.INFO, "[" + getAgName() + "] ignored feedback '"
+                    + InputLimits.abbreviate(result, 200) + "' for action id " + actionId + ": no such action pending");
             return false;
         }
     }
