@@ -15,6 +15,7 @@ import jason.asSyntax.Structure;
 import jason.asSyntax.Term;
 import jason.asSyntax.Trigger;
 import rason.bridge.Bridge;
+import rason.bridge.InputLimits;
 import rason.bridge.Outbound;
 import rason.bridge.Outbox;
 import rason.bridge.Protocol;
@@ -71,7 +72,8 @@ public final class AgentActions {
             log(Level.FINE, "feedback '" + result + "' for action id " + actionId + " after it was taken back: ignored");
             return false;
         default:
-            log(Level.INFO, "ignored feedback '" + result + "' for action id " + actionId + ": no such action pending");
+            Bridge.get().logLimited(Bridge.IGNORED_EVENT, Level.INFO, "[" + agent.get() + "] ignored feedback '"
+                    + InputLimits.abbreviate(result, 200) + "' for action id " + actionId + ": no such action pending");
             return false;
         }
     }

@@ -15,6 +15,7 @@ import rason.RosAgArch;
 import rason.action.ActionEvent;
 import rason.messaging.Fleet;
 import rason.messaging.Messages;
+import rason.messaging.RateLimitedLog;
 import rason.messaging.WarnOnce;
 import rason.perception.PerceptionManagers;
 import rason.perception.Perceptions;
@@ -35,7 +36,9 @@ public final class Bridge implements Fleet.Listener {
     private final AgentRegistry registry = new AgentRegistry();
     private final RosClock clock = new RosClock();
     private final Outbox outbox = new Outbox();
-    private final Fleet fleet = new Fleet(logger, this);
+    // at most a few lines per period of each kind of dropped input (wall clock)
+    private final RateLimitedLog limited = new RateLimitedLog(logger);
+    private final Fleet fleet = new Fleet(logger, this, limited);
     private final WarnOnce warned = new WarnOnce(logger);
     private final Object presencePushLock = new Object();
     // Ids start at a random point of each run, so a restarted process (or a second one for the
@@ -116,6 +119,11 @@ public final class Bridge implements Fleet.Listener {
         return defaultPerceptionManager;
     }
 
+    /** The bounds on perceptions and agent messages (see {@link InputLimits}); the node sets them. */
+    public InputLimits limits() {
+        return InputLimits.current();
+    }
+
     // ---- life cycle --------------------------------------------------------------------
 
     /** A rospy node takes the outbox and the log from now on. */
@@ -193,12 +201,21 @@ public final class Bridge implements Fleet.Listener {
      * @return how many literals were accepted
      */
     public int perceive(String source, String[] texts, long nowNanos) {
+        InputLimits limits = InputLimits.current();
+        String shownSource = InputLimits.abbreviate(source, 100);
+        if (texts.length > limits.maxLiterals()) {
+            limited.warn(DROPPED_PERCEPTION, "dropped perception message from source '" + shownSource + "': "
+                    + texts.length + " literals, more than " + limits.maxLiterals() + " (the source's percepts are unchanged)",
+                    System.nanoTime());
+            return 0;
+        }
         List<Literal> literals = new ArrayList<>(texts.length);
         for (String text : texts) {
             try {
-                literals.add(Perceptions.parse(text));
+                literals.add(Perceptions.parse(text, limits));
             } catch (IllegalArgumentException e) {
-                logger.warning("dropped perception '" + text + "' from source '" + source + "': " + e.getMessage());
+                limited.warn(DROPPED_PERCEPTION, "dropped perception '" + InputLimits.abbreviate(text, 200)
+                        + "' from source '" + shownSource + "': " + e.getMessage(), System.nanoTime());
             }
         }
         List<Literal> shared = List.copyOf(literals);
@@ -217,14 +234,17 @@ public final class Bridge implements Fleet.Listener {
     public boolean event(String agent, String eventType, String[] parameters, String publisher) {
         RosAgArch arch = registry.get(agent);
         if (arch == null) {
-            warned.log("event:" + agent, Level.INFO, "ignoring events for agent '" + agent + "': not hosted here (logged once)");
+            if (warned.firstTime("event:" + agent))
+                logLimited(IGNORED_EVENT, Level.INFO, "ignoring events for agent '" + InputLimits.abbreviate(agent, 100)
+                        + "': not hosted here (logged once)");
             return false;
         }
         ActionEvent ev;
         try {
             ev = ActionEvent.parse(eventType, parameters);
         } catch (IllegalArgumentException e) {
-            logger.warning("ignored event for " + agent + ": " + e.getMessage());
+            logLimited(IGNORED_EVENT, Level.WARNING, "ignored event for " + agent + ": "
+                    + InputLimits.abbreviate(e.getMessage(), 300));
             return false;
         }
         if (ev.started())
@@ -263,6 +283,7 @@ public final class Bridge implements Fleet.Listener {
     /** Called periodically with the ROS time: the one clock of timeouts and expiry. */
     public void tick(long nowNanos) {
         clock.set(nowNanos);
+        limited.tick(System.nanoTime());
         for (RosAgArch arch : registry.all())
             arch.tick(nowNanos, actionTimeoutNanos, perceptionTtlNanos);
     }
@@ -343,5 +364,14 @@ public final class Bridge implements Fleet.Listener {
 
     public static void log(Level level, String message) {
         logger.log(level, message);
+    }
+
+    /** Kinds of the rate-limited log lines (see {@link RateLimitedLog}). */
+    public static final String DROPPED_PERCEPTION = "dropped perception";
+    public static final String IGNORED_EVENT = "ignored event";
+
+    /** Logs a line of kind, at most a few per period of that kind (wall clock); the rest are counted and summarised. */
+    public void logLimited(String kind, Level level, String message) {
+        limited.log(kind, level, message, System.nanoTime());
     }
 }

@@ -9,6 +9,8 @@ import java.util.logging.Logger;
 
 import jason.asSyntax.Term;
 
+import rason.bridge.InputLimits;
+
 /**
  * This process among the other rason_mas processes of the fleet (thesis
  * §5.6): who is reachable, from their presence announcements and messages, and
@@ -40,15 +42,22 @@ public final class Fleet {
     private final Listener listener;
     private final PresenceTable presence = new PresenceTable(); // guarded by itself
     private final WarnOnce warned;
+    private final RateLimitedLog limited;
     private volatile String masId = "";
     private volatile long presenceTimeoutNanos = 2_000_000_000L;
     private volatile long incarnation = 0;
     private volatile boolean stopping = false;
 
     public Fleet(Logger logger, Listener listener) {
+        this(logger, listener, new RateLimitedLog(logger));
+    }
+
+    /** @param limited where dropped messages are logged (kind "dropped message"), at most a few lines per period */
+    public Fleet(Logger logger, Listener listener, RateLimitedLog limited) {
         this.logger = logger;
         this.listener = listener;
         this.warned = new WarnOnce(logger);
+        this.limited = limited;
     }
 
     /** This process's id in agent messages and presence: the rason_mas node name. */
@@ -145,21 +154,23 @@ public final class Fleet {
             String content, boolean hostsSender) {
         if (senderMas.equals(masId) || !(receiverMas.isEmpty() || receiverMas.equals(masId)))
             return null;
-        String what = performative + " from " + sender + " (" + senderMas + ") to "
-                + (receiver.isEmpty() ? "everyone" : receiver);
+        String what = InputLimits.abbreviate(performative, 100) + " from " + InputLimits.abbreviate(sender, 100) + " ("
+                + InputLimits.abbreviate(senderMas, 100) + ") to "
+                + (receiver.isEmpty() ? "everyone" : InputLimits.abbreviate(receiver, 100));
         if (senderMas.isEmpty() || !sender.matches(NAME_PATTERN)) {
-            logger.warning("dropped message " + what + ": sender and sender_mas must be set, and the sender a Jason atom");
+            dropped("dropped message " + what + ": sender and sender_mas must be set, and the sender a Jason atom");
             return null;
         }
         if (!performative.matches(NAME_PATTERN)) {
-            logger.warning("dropped message " + what + ": performative '" + performative + "' is not a Jason atom");
+            dropped("dropped message " + what + ": performative '" + InputLimits.abbreviate(performative, 100)
+                    + "' is not a Jason atom");
             return null;
         }
         Term term;
         try {
             term = Messages.parseContent(content);
         } catch (IllegalArgumentException e) {
-            logger.warning("dropped message " + what + ": " + e.getMessage());
+            dropped("dropped message " + what + ": " + e.getMessage());
             return null;
         }
         PresenceTable.Changes c;
@@ -175,7 +186,16 @@ public final class Fleet {
 
     /** Logs a message for an agent this process does not host, once per name. */
     public void noSuchReceiver(String name, String what) {
-        warned.warn("receiver:" + name, "dropped message " + what + ": no agent '" + name + "' here (logged once per name)");
+        if (warned.firstTime("receiver:" + name))
+            dropped("dropped message " + what + ": no agent '" + InputLimits.abbreviate(name, 100)
+                    + "' here (logged once per name)");
+    }
+
+    /** Kind of the rate-limited lines of dropped messages. */
+    public static final String DROPPED_MESSAGE = "dropped message";
+
+    private void dropped(String line) {
+        limited.warn(DROPPED_MESSAGE, line, System.nanoTime());
     }
 
     /** "/robot1" for "/robot1/rason_mas", "" for "/rason_mas". */

@@ -10,6 +10,8 @@ import jason.asSyntax.StringTermImpl;
 import jason.asSyntax.Structure;
 import jason.asSyntax.Term;
 
+import rason.bridge.InputLimits;
+
 /** Jason messages as they cross between processes: content as Jason text, parsed once on arrival. */
 public final class Messages {
 
@@ -68,20 +70,39 @@ public final class Messages {
     }
 
     /**
-     * Parses received content.
+     * Parses received content within the bridge's limits ({@link InputLimits#current()}).
      *
      * @throws IllegalArgumentException saying why it is not a Jason term
      */
     public static Term parseContent(String text) {
+        return parseContent(text, InputLimits.current());
+    }
+
+    /**
+     * Parses received content; content longer or more deeply nested than the
+     * limits is refused before Jason's parser sees it.
+     *
+     * @throws IllegalArgumentException saying why it is not a Jason term or is refused
+     */
+    public static Term parseContent(String text, InputLimits limits) {
         if (text == null || text.isBlank())
             throw new IllegalArgumentException("empty content");
+        String shown = InputLimits.abbreviate(text, 200);
+        String tooBig = InputLimits.checkText(text, limits.maxContentLength(), limits.maxNesting(), limits.maxTermDepth());
+        if (tooBig != null)
+            throw new IllegalArgumentException("content '" + shown + "' refused: " + tooBig);
+        Term term;
         try {
-            return ASSyntax.parseTerm(text.strip());
+            term = ASSyntax.parseTerm(text.strip());
         } catch (Exception | Error e) { // ParseException, or TokenMgrError from the lexer
             String why = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
             int nl = why.indexOf('\n');
-            throw new IllegalArgumentException("content '" + text + "' is not a Jason term: " + (nl < 0 ? why : why.substring(0, nl)));
+            throw new IllegalArgumentException("content '" + shown + "' is not a Jason term: " + (nl < 0 ? why : why.substring(0, nl)));
         }
+        String tooDeep = InputLimits.checkDepth(term, limits.maxTermDepth());
+        if (tooDeep != null)
+            throw new IllegalArgumentException("content '" + shown + "' refused: " + tooDeep);
+        return term;
     }
 
     /** The message the receiving agent's mailbox gets; an empty id gets a fresh one from this JVM. */

@@ -28,6 +28,13 @@ public final class WarnOnce {
         this.logger = logger;
     }
 
+    /** @return true the first time key is seen (nothing is logged: the caller logs) */
+    public boolean firstTime(String key) {
+        synchronized (seen) {
+            return seen.add(key);
+        }
+    }
+
     /** Logs a warning the first time key is seen; @return true if it was logged */
     public boolean warn(String key, String message) {
         return log(key, Level.WARNING, message);
