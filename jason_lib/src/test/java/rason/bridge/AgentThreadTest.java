@@ -1,11 +1,12 @@
 package rason.bridge;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static rason.bridge.RunningAgents.await;
+import static rason.bridge.RunningAgents.believes;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
-import java.util.function.BooleanSupplier;
 
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -37,14 +38,6 @@ class AgentThreadTest {
     @AfterEach
     void stop() throws Exception {
         agents.stop();
-    }
-
-    private static boolean believes(RosAgArch arch, String literal) {
-        return RunningAgents.believes(arch, literal);
-    }
-
-    private static void await(String what, BooleanSupplier condition) throws InterruptedException {
-        RunningAgents.await(what, condition);
     }
 
     private Outbound.Action nextAction() throws InterruptedException {

@@ -1,12 +1,13 @@
 package rason.bridge;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static rason.bridge.RunningAgents.await;
+import static rason.bridge.RunningAgents.believes;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
-import java.util.function.BooleanSupplier;
 
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -49,14 +50,6 @@ class PreemptionTest {
     @AfterEach
     void stop() throws Exception {
         agents.stop();
-    }
-
-    private static boolean believes(RosAgArch arch, String literal) {
-        return RunningAgents.believes(arch, literal);
-    }
-
-    private static void await(String what, BooleanSupplier condition) throws InterruptedException {
-        RunningAgents.await(what, condition);
     }
 
     private <T extends Outbound> T next(Class<T> kind) throws InterruptedException {
