@@ -19,6 +19,7 @@ import rospy
 from rason_msgs.msg import Action, AgentMessage, Event, Perception, Presence
 
 from rason_bridge.jvm import JvmError, start_jvm
+from rason_bridge.limits import apply_input_limits
 from rason_bridge.outbox import DEFERRED, NO_DECOMPOSER, ActionOutbox
 from rason_bridge.peers import HELD, MessageOutbox
 
@@ -129,6 +130,10 @@ class RasonMasNode(object):
         self._stop_item = jpype.JClass(outbound + 'Stop')
         self._bridge.attach()  # the agents' outbox and log are ours from now on
         threading.Thread(target=self._log_loop, name='rason_log', daemon=True).start()
+
+    def input_limits(self):
+        """The bounds on perceptions and messages (Java's InputLimits; see :mod:`rason_bridge.limits`)."""
+        return self._bridge.limits()
 
     # ---- life cycle -----------------------------------------------------------------
 
@@ -425,7 +430,9 @@ def main(argv=None):
     ``presence_topic`` (str, /rason/presence), ``presence_period`` (float s, 0.5),
     ``presence_timeout`` (float s, 2), ``presence_beliefs`` (bool, true),
     ``ask_timeout`` (float s, 60; 0 disables), ``perception_manager`` (str, per_source),
-    ``decomposer_grace`` (float s, 0.5).
+    ``decomposer_grace`` (float s, 0.5), and the input limits ``max_literal_length`` (int, 4096),
+    ``max_content_length`` (int, 65536), ``max_nesting`` (int, 32), ``max_term_depth`` (int, 512),
+    ``max_literals`` (int, 1000) (see :mod:`rason_bridge.limits`).
     Publishes the hosted agents' names on the ``~agents`` parameter.
     """
     args = rospy.myargv(argv if argv is not None else sys.argv)
@@ -452,6 +459,7 @@ def main(argv=None):
                             agent_prefix=str(rospy.get_param('~agent_prefix', '')),
                             perception_manager=str(rospy.get_param('~perception_manager', 'per_source')),
                             decomposer_grace=float(rospy.get_param('~decomposer_grace', 0.5)))
+        apply_input_limits(node.input_limits(), lambda name, default: rospy.get_param('~' + name, default))
     except ValueError as e:
         rospy.logfatal('bad parameter: %s', e)
         return 1

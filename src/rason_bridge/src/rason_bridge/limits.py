@@ -1,0 +1,24 @@
+"""The ~params that bound hostile or unlucky input (Java's rason.bridge.InputLimits); no rospy."""
+
+#: ~param -> the InputLimits getter and setter; the defaults are the Java object's values.
+INPUT_LIMIT_PARAMS = {
+    'max_literal_length': ('maxLiteralLength', 'setMaxLiteralLength'),
+    'max_content_length': ('maxContentLength', 'setMaxContentLength'),
+    'max_nesting': ('maxNesting', 'setMaxNesting'),
+    'max_term_depth': ('maxTermDepth', 'setMaxTermDepth'),
+    'max_literals': ('maxLiterals', 'setMaxLiterals'),
+}
+
+
+def apply_input_limits(limits, get_param):
+    """Set every limit from ``get_param(name, default)``, the default being the current value.
+
+    :param limits: the Java ``InputLimits`` (``Bridge.get().limits()``)
+    :param get_param: e.g. ``lambda n, d: rospy.get_param('~' + n, d)``
+    :raises ValueError: a value that is not a positive whole number, naming the parameter
+    """
+    for name, (getter, setter) in INPUT_LIMIT_PARAMS.items():
+        value = get_param(name, int(getattr(limits, getter)()))
+        if isinstance(value, bool) or not isinstance(value, int) or value < 1:
+            raise ValueError('%s must be a whole number of at least 1, not %r' % (name, value))
+        getattr(limits, setter)(value)

@@ -1,0 +1,34 @@
+"""rason_mas's ~max_* parameters reach Java's InputLimits, and bad values are refused by name."""
+import jpype
+import pytest
+
+from rason_bridge.jvm import start_jvm
+from rason_bridge.limits import INPUT_LIMIT_PARAMS, apply_input_limits
+
+start_jvm()
+InputLimits = jpype.JClass('rason.bridge.InputLimits')
+
+
+def test_defaults_are_the_java_defaults():
+    limits = InputLimits()
+    apply_input_limits(limits, lambda name, default: default)
+    fresh = InputLimits()
+    assert (limits.maxLiteralLength(), limits.maxContentLength(), limits.maxNesting(), limits.maxTermDepth(),
+            limits.maxLiterals()) == (fresh.maxLiteralLength(), fresh.maxContentLength(), fresh.maxNesting(),
+                                      fresh.maxTermDepth(), fresh.maxLiterals())
+
+
+def test_each_parameter_sets_its_limit():
+    limits = InputLimits()
+    given = {'max_literal_length': 100, 'max_content_length': 200, 'max_nesting': 3, 'max_term_depth': 40,
+             'max_literals': 7}
+    assert set(given) == set(INPUT_LIMIT_PARAMS)
+    apply_input_limits(limits, lambda name, default: given[name])
+    assert (limits.maxLiteralLength(), limits.maxContentLength(), limits.maxNesting(), limits.maxTermDepth(),
+            limits.maxLiterals()) == (100, 200, 3, 40, 7)
+
+
+@pytest.mark.parametrize('bad', [0, -5, 2.5, 'many', True, None])
+def test_a_bad_value_is_refused_naming_the_parameter(bad):
+    with pytest.raises(ValueError, match='max_nesting'):
+        apply_input_limits(InputLimits(), lambda name, default: bad if name == 'max_nesting' else default)
