@@ -52,10 +52,6 @@ public final class AgentRegistry {
         agentPrefix = prefix == null ? "" : prefix;
     }
 
-    public String getAgentPrefix() {
-        return agentPrefix;
-    }
-
     /** The hosted agent called name, or prefix+name (so a program reaches its own robot's agents by their short names); null if neither. */
     public String localNameFor(String name) {
         Map<String, LocalAgArch> jason = jasonAgents();

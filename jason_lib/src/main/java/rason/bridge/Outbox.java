@@ -34,10 +34,6 @@ public final class Outbox {
         return queue.poll();
     }
 
-    public boolean isOpen() {
-        return open;
-    }
-
     void open() {
         open = true;
     }
