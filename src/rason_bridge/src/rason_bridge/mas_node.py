@@ -16,12 +16,15 @@ import time
 
 import rosgraph
 import rospy
+from rospy.impl.rosout import RosOutHandler
 from rason_msgs.msg import Action, AgentMessage, Event, Perception, Presence
 
 from rason_bridge.jvm import JvmError, start_jvm
+from rason_bridge.exits import exit_for_shutdown
 from rason_bridge.limits import apply_input_limits
 from rason_bridge.outbox import DEFERRED, NO_DECOMPOSER, ActionOutbox
 from rason_bridge.peers import HELD, MessageOutbox
+from rason_bridge.trust import apply_trust
 
 _JAVA_SEVERE = 1000
 _JAVA_WARNING = 900
@@ -135,6 +138,10 @@ class RasonMasNode(object):
         """The bounds on perceptions and messages (Java's InputLimits; see :mod:`rason_bridge.limits`)."""
         return self._bridge.limits()
 
+    def set_trust(self, value):
+        """Rules of the ~trust parameter (see :mod:`rason_bridge.trust`); ValueError if one is bad."""
+        apply_trust(self._bridge, value, self._jpype.JException)
+
     # ---- life cycle -----------------------------------------------------------------
 
     def load(self, mas2j_path):
@@ -180,6 +187,13 @@ class RasonMasNode(object):
             self._publish_cancel(str(agent), 0, Event.RESTART)
         self._mas.start()
 
+    def close_log(self):
+        """Write what Java still has queued and log to stderr from now on (before the node exits)."""
+        self._log_stop.set()
+        self._bridge.detach()
+        while self._drain_log():
+            pass
+
     def stop(self, grace=0.5, join_timeout=3.0):
         """Fail pending actions with ``shutdown``, let failure plans run for ``grace`` s, stop the agents."""
         if self._stopping:
@@ -198,10 +212,20 @@ class RasonMasNode(object):
         self._outbound_stop.set()
         if self._outbound_thread is not None:
             self._outbound_thread.join(join_timeout)
-        self._log_stop.set()
-        self._bridge.detach()  # from now on Java logs to stderr
-        while self._drain_log():
-            pass
+        self.close_log()
+
+    def shutdown_requested(self, reason):
+        """rospy is shutting down for ``reason``: a node that took our name ends us with an error."""
+        code, why = exit_for_shutdown(reason)
+        if code:
+            self.exit_code = code
+            # rospy asks the master for a parameter on every rosout line (rosout_disable_topics_generation),
+            # and that call, made under our name, would make the master shut the new node down in turn
+            rosout = logging.getLogger('rosout')
+            for handler in list(rosout.handlers):
+                if isinstance(handler, RosOutHandler):
+                    rosout.removeHandler(handler)
+            rospy.logfatal(why)  # stderr and the log file only
 
     # ---- ROS -> agents -------------------------------------------------------------
 
@@ -446,6 +470,7 @@ def main(argv=None):
     except JvmError as e:
         rospy.logfatal(str(e))
         return 1
+    node = None
     try:
         node = RasonMasNode(action_timeout=rospy.get_param('~action_timeout', 60.0),
                             perception_ttl=rospy.get_param('~perception_ttl', 2.0),
@@ -460,17 +485,22 @@ def main(argv=None):
                             perception_manager=str(rospy.get_param('~perception_manager', 'per_source')),
                             decomposer_grace=float(rospy.get_param('~decomposer_grace', 0.5)))
         apply_input_limits(node.input_limits(), lambda name, default: rospy.get_param('~' + name, default))
+        node.set_trust(rospy.get_param('~trust', {}))
     except ValueError as e:
+        if node is not None:
+            node.close_log()
         rospy.logfatal('bad parameter: %s', e)
         return 1
     try:
         names = node.load(mas2j)
     except RuntimeError as e:
+        node.close_log()  # Jason's own errors first: the reason is among them
         rospy.logfatal('cannot run %s: %s', mas2j, e)
         return 1
     rospy.set_param('~agents', names)
     rospy.loginfo('running %s with agents %s', os.path.basename(mas2j), ', '.join(names))
     grace = rospy.get_param('~shutdown_grace', 0.5)
+    rospy.core.add_preshutdown_hook(node.shutdown_requested)
     rospy.on_shutdown(lambda: node.stop(grace=grace))
     node.start()
     rospy.spin()

@@ -30,6 +30,7 @@ import rason.bridge.Outbound;
 import rason.bridge.Protocol;
 import rason.messaging.Messages;
 import rason.messaging.RemoteAsks;
+import rason.messaging.SentAsks;
 import rason.perception.PerSourcePerception;
 import rason.perception.PerceptionManager;
 import rason.perception.PerceptionManagers;
@@ -51,6 +52,7 @@ public class RosAgArch extends AgArch {
     private final AgentActions actions = new AgentActions(bridge::nextActionId, bridge.outbox(), this::getAgName,
             this::dataArrived);
     private final RemoteAsks asks = new RemoteAsks();
+    private final SentAsks sentAsks = new SentAsks();
     private volatile PerceptionManager perception = new SelectivePerception(new PerSourcePerception(), null);
     private volatile String failAsksReason = null; // set at shutdown
     private volatile List<Literal> presence = List.of();
@@ -242,6 +244,8 @@ public class RosAgArch extends AgArch {
         if (syncAsk)
             asks.track(m.getMsgId(), to, bridge.clock().now(),
                     hasJasonTimeout(m.getMsgId()) ? 0 : bridge.askTimeoutNanos());
+        if (m.isAsk())
+            sentAsks.sent(m.getMsgId(), to);
         try {
             publish(mas, m);
         } catch (JasonException e) {
@@ -276,7 +280,17 @@ public class RosAgArch extends AgArch {
         }
         Message remote = m.clone();
         remote.setReceiver("");
+        if (remote.isAsk())
+            sentAsks.sent(remote.getMsgId(), "");
         publish("", remote);
+    }
+
+    /**
+     * Whether a message of another process from sender answers an ask this
+     * agent sent it (then the trust policy lets it in whatever its performative).
+     */
+    public boolean asked(String sender, String inReplyTo) {
+        return sentAsks.answeredBy(inReplyTo, sender);
     }
 
     /** Queues m for another process (receiverMas empty: every other process). */

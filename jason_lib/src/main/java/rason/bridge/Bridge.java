@@ -16,6 +16,7 @@ import rason.action.ActionEvent;
 import rason.messaging.Fleet;
 import rason.messaging.Messages;
 import rason.messaging.RateLimitedLog;
+import rason.messaging.TrustPolicy;
 import rason.messaging.WarnOnce;
 import rason.perception.PerceptionManagers;
 import rason.perception.Perceptions;
@@ -40,6 +41,7 @@ public final class Bridge implements Fleet.Listener {
     private final RateLimitedLog limited = new RateLimitedLog(logger);
     private final Fleet fleet = new Fleet(logger, this, limited);
     private final WarnOnce warned = new WarnOnce(logger);
+    private final TrustPolicy trust = new TrustPolicy();
     private final Object presencePushLock = new Object();
     // Ids start at a random point of each run, so a restarted process (or a second one for the
     // same agent name) does not reuse the ids a decomposer may still hold; 0 is never used
@@ -333,10 +335,50 @@ public final class Bridge implements Fleet.Listener {
                 fleet.noSuchReceiver(name, in.what());
                 continue;
             }
+            if (!trusted(name, sender, senderMas, performative, inReplyTo))
+                continue;
             la.receiveMsg(Messages.toJason(performative, sender, name, in.content(), msgId, inReplyTo));
             delivered++;
         }
         return delivered;
+    }
+
+    /** Kind of the rate-limited lines of messages the trust policy refused. */
+    public static final String REFUSED_MESSAGE = "refused message";
+
+    /** The trust policy lets receiver take this message of another process (answers to its own asks always). */
+    private boolean trusted(String receiver, String sender, String senderMas, String performative, String inReplyTo) {
+        if (trust.allows(receiver, sender, performative))
+            return true;
+        RosAgArch arch = registry.get(receiver);
+        if (arch != null && arch.asked(sender, inReplyTo))
+            return true;
+        TrustPolicy.Group g = TrustPolicy.Group.of(performative);
+        TrustPolicy.Rule rule = trust.rule(receiver, g);
+        limited.warn(REFUSED_MESSAGE, "refused " + InputLimits.abbreviate(performative, 100) + " from " + sender + " ("
+                + InputLimits.abbreviate(senderMas, 100) + ") to " + receiver + ": " + receiver + " takes " + g.key + " from "
+                + (rule.names().isEmpty() ? "no agent of another robot" : "other robots' " + rule + " only") + " ("
+                + g.option() + " in the .mas2j, or ~trust)", System.nanoTime());
+        return false;
+    }
+
+    /** Which agents of other processes may send what to the hosted agents. */
+    public TrustPolicy trust() {
+        return trust;
+    }
+
+    /**
+     * A rule of the ~trust parameter.
+     *
+     * @param agent a hosted agent's name, or {@link TrustPolicy#EVERY_AGENT}
+     * @param group a performative group ({@link TrustPolicy.Group#key})
+     * @param spec all, none or agent names
+     * @throws IllegalArgumentException saying what is wrong
+     */
+    public void setTrust(String agent, String group, String spec) {
+        if (!agent.equals(TrustPolicy.EVERY_AGENT) && !agent.matches(Fleet.NAME_PATTERN))
+            throw new IllegalArgumentException("'" + InputLimits.abbreviate(agent, 60) + "' is not an agent name or '*'");
+        trust.setParameterRule(agent, TrustPolicy.Group.byKey(group), TrustPolicy.Rule.parse(spec));
     }
 
     // ---- Fleet.Listener ----------------------------------------------------------------

@@ -5,11 +5,15 @@ import java.io.FileInputStream;
 import java.io.InputStream;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.logging.Handler;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 
 import jason.JasonException;
+import jason.architecture.AgArch;
+import jason.asSemantics.Agent;
+import jason.bb.BeliefBase;
 import jason.asSyntax.directives.DirectiveProcessor;
 import jason.asSyntax.directives.Include;
 import jason.infra.local.LocalAgArch;
@@ -22,6 +26,7 @@ import rason.RosAgArch;
 import rason.bridge.Bridge;
 import rason.bridge.Outbound;
 import rason.messaging.Fleet;
+import rason.messaging.TrustPolicy;
 import rason.perception.PerceptionManagers;
 
 /**
@@ -99,6 +104,7 @@ public class RasonLocalMAS extends RunLocalMAS {
             ap.setSource(asl.getPath());
             if (!ap.getAgArchClasses().contains(ARCH_CLASS))
                 ap.addArchClass(ARCH_CLASS);
+            checkClasses(ap);
             try {
                 // the same check RosAgArch.init makes, but fatal here: a typo must not go unnoticed
                 PerceptionManagers.forAgent(unquote(ap.getOption(PerceptionManagers.MANAGER_OPTION)),
@@ -109,8 +115,90 @@ public class RasonLocalMAS extends RunLocalMAS {
                 throw new JasonException("agent '" + ap.name + "': " + e.getMessage());
             }
             ap.name = agentPrefix + ap.name;
+            readTrustOptions(ap);
         }
         project.fixAgentsSrc();
+    }
+
+    /**
+     * Jason logs a class it cannot load and runs the agent without it (or not
+     * at all): here a misspelt class stops the node instead.
+     *
+     * @throws JasonException naming the agent, the class and what is wrong with it
+     */
+    private static void checkClasses(AgentParameters ap) throws JasonException {
+        for (String arch : ap.getAgArchClasses())
+            checkClass(ap, "agentArchClass", arch, AgArch.class);
+        if (ap.agClass != null)
+            checkClass(ap, "agentClass", ap.agClass.getClassName(), Agent.class);
+        if (ap.getBBClass() != null)
+            checkClass(ap, "beliefBaseClass", ap.getBBClass().getClassName(), BeliefBase.class);
+    }
+
+    private static void checkClass(AgentParameters ap, String what, String name, Class<?> base) throws JasonException {
+        Class<?> c;
+        try {
+            c = Class.forName(name, false, RasonLocalMAS.class.getClassLoader());
+        } catch (ClassNotFoundException | LinkageError e) {
+            throw new JasonException("agent '" + ap.name + "': " + what + " " + name + " not found (a typo, or its jar"
+                    + " is not on RASON_EXTRA_CLASSPATH)");
+        }
+        if (!base.isAssignableFrom(c))
+            throw new JasonException("agent '" + ap.name + "': " + what + " " + name + " is not a " + base.getName());
+    }
+
+    /**
+     * Creates the agents; Jason logs an agent it cannot create (say its .asl
+     * does not parse) and goes on without it, but a robot missing one of its
+     * agents must not start.
+     *
+     * @throws JasonException naming the agents that were not created
+     */
+    @Override
+    public void create() throws JasonException {
+        super.create();
+        List<String> missing = new ArrayList<>();
+        for (AgentParameters ap : project.getAgents()) {
+            if (ap.getNbInstances() <= 1) {
+                if (getAg(ap.name) == null)
+                    missing.add(ap.name);
+                continue;
+            }
+            for (int i = 1; i <= ap.getNbInstances(); i++)
+                if (getAg(ap.name + i) == null)
+                    missing.add(ap.name + i);
+        }
+        if (!missing.isEmpty())
+            throw new JasonException("agent" + (missing.size() > 1 ? "s " : " ") + String.join(", ", missing)
+                    + " could not be created (Jason's error is above)");
+    }
+
+    /**
+     * The agent's trust_&lt;group&gt; options: which agents of other robots it takes
+     * which performatives from (see {@link TrustPolicy}).
+     *
+     * @throws JasonException for an unknown group or a rule that does not parse
+     */
+    private static void readTrustOptions(AgentParameters ap) throws JasonException {
+        Map<String, String> options = ap.getOptions();
+        if (options == null)
+            return;
+        for (Map.Entry<String, String> o : options.entrySet()) {
+            if (!o.getKey().startsWith(TrustPolicy.OPTION_PREFIX))
+                continue;
+            try {
+                TrustPolicy.Group group = TrustPolicy.Group.byKey(o.getKey().substring(TrustPolicy.OPTION_PREFIX.length()));
+                TrustPolicy.Rule rule = TrustPolicy.Rule.parse(o.getValue());
+                // Jason numbers the instances of an agent with #n: bob1, bob2, ...
+                List<String> names = new ArrayList<>(List.of(ap.name));
+                for (int i = 1; ap.getNbInstances() > 1 && i <= ap.getNbInstances(); i++)
+                    names.add(ap.name + i);
+                for (String name : names)
+                    Bridge.get().trust().setProgramRule(name, group, rule);
+            } catch (IllegalArgumentException e) {
+                throw new JasonException("agent '" + ap.name + "', option " + o.getKey() + ": " + e.getMessage());
+            }
+        }
     }
 
     private static String unquote(String s) {

@@ -1,0 +1,95 @@
+package rason.bridge;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static rason.bridge.RunningAgents.await;
+import static rason.bridge.RunningAgents.believes;
+
+import java.nio.file.Path;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import jason.asSyntax.ASSyntax;
+import jason.asSyntax.Trigger;
+import rason.RosAgArch;
+import rason.messaging.TrustPolicy;
+
+/**
+ * Messages from agents of another process pass the receiver's trust policy:
+ * a plan told by a robot the agent does not trust never reaches Jason, one
+ * told by a trusted robot does, and the answer to the agent's own askHow gets
+ * in from the robot it asked and from nobody else.
+ */
+class TrustedMessagesTest {
+
+    private static final String OTHER_MAS = "/robot2/rason_mas";
+    private static final String PLAN = "\"+!trick <- +tricked.\"";
+
+    private final Bridge bridge = Bridge.get();
+    private final RunningAgents agents = new RunningAgents();
+
+    @TempDir
+    Path dir;
+
+    @AfterEach
+    void stop() throws Exception {
+        agents.stop();
+    }
+
+    private RosAgArch start(String agent, String program) throws Exception {
+        bridge.setMasId("/robot1/rason_mas");
+        bridge.presenceAnnounced(OTHER_MAS, 7L, new String[] { "carol", "mallory" }, false);
+        return agents.start(dir, agent, program);
+    }
+
+    private int fromOtherRobot(String sender, String receiver, String performative, String content, String inReplyTo) {
+        return bridge.deliverMessage(OTHER_MAS, sender, "", receiver, performative, content, "mid" + System.nanoTime(),
+                inReplyTo);
+    }
+
+    private static boolean hasPlanFor(RosAgArch arch, String goal) {
+        Trigger t = new Trigger(Trigger.TEOperator.add, Trigger.TEType.achieve, ASSyntax.createLiteral(goal));
+        return arch.getTS().getAg().getPL().hasCandidatePlan(t);
+    }
+
+    @Test
+    void byDefaultAPlanToldByAnotherRobotIsRefusedAndItsAskHowToo() throws Exception {
+        RosAgArch arch = start("guarded", "+hello[source(S)] <- +heard(S).");
+        assertEquals(0, fromOtherRobot("carol", "guarded", "tellHow", PLAN, ""));
+        assertEquals(0, fromOtherRobot("carol", "guarded", "untellHow", "trick", ""));
+        assertEquals(0, fromOtherRobot("carol", "guarded", "askHow", "\"+hello\"", ""));
+        assertEquals(1, fromOtherRobot("carol", "guarded", "tell", "hello", ""));
+        await("the tell that is allowed", () -> believes(arch, "heard(carol)"));
+        assertFalse(hasPlanFor(arch, "trick"));
+        assertTrue(bridge.outbox().poll() == null, "nothing answered the askHow");
+    }
+
+    @Test
+    void aRobotTheAgentTrustsMayTellItPlans() throws Exception {
+        bridge.trust().setParameterRule("open", TrustPolicy.Group.TELL_HOW, TrustPolicy.Rule.parse("carol"));
+        RosAgArch arch = start("open", "");
+        assertEquals(0, fromOtherRobot("mallory", "open", "tellHow", PLAN, ""));
+        assertEquals(1, fromOtherRobot("carol", "open", "tellHow", PLAN, ""));
+        await("carol's plan", () -> hasPlanFor(arch, "trick"));
+        assertEquals(1, fromOtherRobot("carol", "open", "achieve", "trick", ""));
+        await("the plan runs", () -> believes(arch, "tricked"));
+    }
+
+    @Test
+    void theAnswerToTheAgentsOwnAskHowGetsInFromTheAskedRobotOnly() throws Exception {
+        RosAgArch arch = start("curious", "!learn. +!learn <- .send(carol, askHow, \"+!trick\").");
+        Outbound.AgentMessage ask = agents.next(Outbound.AgentMessage.class);
+        assertEquals("askHow", ask.performative());
+        assertEquals("carol", ask.receiver());
+        assertEquals(0, fromOtherRobot("mallory", "curious", "tellHow", "[" + PLAN + "]", ask.msgId()),
+                "mallory did not get the question");
+        assertEquals(0, fromOtherRobot("carol", "curious", "tellHow", "[" + PLAN + "]", "mid_never_sent"));
+        assertEquals(1, fromOtherRobot("carol", "curious", "tellHow", "[" + PLAN + "]", ask.msgId()));
+        await("the answer's plan", () -> hasPlanFor(arch, "trick"));
+        assertEquals(0, fromOtherRobot("carol", "curious", "tellHow", "[" + PLAN + "]", ask.msgId()),
+                "a question is answered once");
+    }
+}
