@@ -31,6 +31,8 @@ public final class Messages {
      * value between quotes as it is, so "say \"hi\"" would not parse back.
      */
     static Term escapeStrings(Term t) {
+        if (t instanceof jason.asSyntax.Plan)
+            return t; // a plan (an askHow's answer) prints its own text, and Jason cannot set its terms
         if (t.isString()) {
             String v = ((StringTerm) t).getString();
             String e = escape(v);

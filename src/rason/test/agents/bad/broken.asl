@@ -1,0 +1,2 @@
+// Does not parse: the plan body never ends.
++!started <- .print("never"
