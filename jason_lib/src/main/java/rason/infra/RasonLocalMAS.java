@@ -158,16 +158,10 @@ public class RasonLocalMAS extends RunLocalMAS {
     public void create() throws JasonException {
         super.create();
         List<String> missing = new ArrayList<>();
-        for (AgentParameters ap : project.getAgents()) {
-            if (ap.getNbInstances() <= 1) {
-                if (getAg(ap.name) == null)
-                    missing.add(ap.name);
-                continue;
-            }
-            for (int i = 1; i <= ap.getNbInstances(); i++)
-                if (getAg(ap.name + i) == null)
-                    missing.add(ap.name + i);
-        }
+        for (AgentParameters ap : project.getAgents())
+            for (String name : instanceNames(ap))
+                if (getAg(name) == null)
+                    missing.add(name);
         if (!missing.isEmpty())
             throw new JasonException("agent" + (missing.size() > 1 ? "s " : " ") + String.join(", ", missing)
                     + " could not be created (Jason's error is above)");
@@ -189,16 +183,22 @@ public class RasonLocalMAS extends RunLocalMAS {
             try {
                 TrustPolicy.Group group = TrustPolicy.Group.byKey(o.getKey().substring(TrustPolicy.OPTION_PREFIX.length()));
                 TrustPolicy.Rule rule = TrustPolicy.Rule.parse(o.getValue());
-                // Jason numbers the instances of an agent with #n: bob1, bob2, ...
-                List<String> names = new ArrayList<>(List.of(ap.name));
-                for (int i = 1; ap.getNbInstances() > 1 && i <= ap.getNbInstances(); i++)
-                    names.add(ap.name + i);
-                for (String name : names)
+                for (String name : instanceNames(ap))
                     Bridge.get().trust().setProgramRule(name, group, rule);
             } catch (IllegalArgumentException e) {
                 throw new JasonException("agent '" + ap.name + "', option " + o.getKey() + ": " + e.getMessage());
             }
         }
+    }
+
+    /** The names Jason gives an agent's instances: bob, or bob1, bob2, ... for {@code bob #n}. */
+    private static List<String> instanceNames(AgentParameters ap) {
+        if (ap.getNbInstances() <= 1)
+            return List.of(ap.name);
+        List<String> names = new ArrayList<>();
+        for (int i = 1; i <= ap.getNbInstances(); i++)
+            names.add(ap.name + i);
+        return names;
     }
 
     private static String unquote(String s) {
