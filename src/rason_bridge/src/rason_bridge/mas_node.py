@@ -543,6 +543,9 @@ def main(argv=None):
 def run():
     """Entry point of the installed script: exit without waiting for stray JVM threads."""
     code = main()
+    if not rospy.core.is_shutdown() and rospy.core.is_initialized():
+        # a start-up error (bad parameter, no key): leave the master's lists as a clean stop does
+        rospy.signal_shutdown('exiting with status %d' % code)
     logging.shutdown()
     sys.stdout.flush()
     sys.stderr.flush()
