@@ -25,16 +25,18 @@ export ROS_HOME := $(CURDIR)/build/ros_home
 export ROS_LOG_DIR := $(CURDIR)/build/ros_home/log
 export ROS_IP := 127.0.0.1
 ROSENV := set +u; source $(CURDIR)/devel/setup.bash; set -u;
+# The fleet key of every rason_mas started through make (its default place under ROS_HOME).
+FLEET_KEY := $(ROS_HOME)/rason/fleet.key
 
 .PHONY: help setup apt jason_lib catkin test javatest unit rostest demo bench clean
 
 help:
 	@echo "make demo   - set up, then run the case study (both actuators faulty) in the simulator"
 	@echo "make test   - set up, then run unit tests (JUnit, pytest) and rostests"
-	@echo "make setup  - install Debian packages, build jason_lib (Maven) and the catkin workspace"
+	@echo "make setup  - install Debian packages, build jason_lib (Maven) and the catkin workspace, make a fleet key"
 	@echo "make bench  - benchmarks (see README)"
 
-setup: apt jason_lib catkin
+setup: apt jason_lib catkin $(FLEET_KEY)
 
 # Idempotent: only asks apt when a package is missing.
 apt:
@@ -55,6 +57,10 @@ catkin:
 	@catkin_make -DPYTHON_EXECUTABLE=$(PY) -DCMAKE_BUILD_TYPE=Release \
 	  --cmake-args -Wno-dev > build.log 2>&1 || { tail -40 build.log; exit 1; }
 	@echo "catkin: workspace built (log: build.log)"
+
+# Made once (a random key, mode 0600), never overwritten: see README "Security".
+$(FLEET_KEY):
+	@PYTHONPATH=$(CURDIR)/src/rason_bridge/src $(PY) -m rason_bridge.fleet_key $@
 
 test: setup
 	@$(MAKE) --no-print-directory javatest unit rostest

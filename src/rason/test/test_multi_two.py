@@ -4,6 +4,7 @@ it, .all_names and present/1, unknown receivers failing with a reason, an unansw
 ending after ~ask_timeout, bad input dropped with a log line while everything keeps
 working, and the remote round trip time."""
 import os
+import re
 import sys
 import time
 import unittest
@@ -12,7 +13,7 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'nodes'))
-from rason_testing import LogWatcher, Robot, run  # noqa: E402
+from rason_testing import FleetSigner, LogWatcher, Robot, run  # noqa: E402
 from rason_msgs.msg import AgentMessage, Presence  # noqa: E402
 
 
@@ -100,28 +101,32 @@ class TestTwoProcesses(unittest.TestCase):
         run(self.log, self.r1, 'alice', 'names', r'names .*')
 
     def test_09_bad_input_is_dropped_with_a_log_line_and_everything_keeps_working(self):
+        # signed with the fleet key by this node, so the checks after authentication are reached
+        # (unsigned and forged input: the fleet_auth rostest)
+        signer = FleetSigner()
+        me = re.escape(signer.mas_id)
         pub = rospy.Publisher('/rason/messages', AgentMessage, queue_size=10)
         ppub = rospy.Publisher('/rason/presence', Presence, queue_size=10)
         deadline = time.monotonic() + 10
         while (pub.get_num_connections() < 2 or ppub.get_num_connections() < 2) and time.monotonic() < deadline:
             time.sleep(0.05)
-        base = dict(sender_mas='/intruder', sender='mallory', receiver_mas='/robot1/rason_mas',
-                    receiver='alice', performative='tell', msg_id='x1', in_reply_to='')
-        pub.publish(AgentMessage(content='hello(', **base))
-        self.expect(r"dropped message tell from mallory \(/intruder\) to alice: content 'hello\(' is not a Jason term")
-        pub.publish(AgentMessage(content='hello(9)', **dict(base, receiver='zed')))
-        self.expect(r"dropped message tell from mallory \(/intruder\) to zed: no agent 'zed' here")
-        pub.publish(AgentMessage(content='hello(9)', **dict(base, sender='Mallory')))
+        base = dict(sender='mallory', receiver_mas='/robot1/rason_mas', receiver='alice', performative='tell',
+                    msg_id='x1')
+        pub.publish(signer.message(content='hello(', **base))
+        self.expect(r"dropped message tell from mallory \(%s\) to alice: content 'hello\(' is not a Jason term" % me)
+        pub.publish(signer.message(content='hello(9)', **dict(base, receiver='zed')))
+        self.expect(r"dropped message tell from mallory \(%s\) to zed: no agent 'zed' here" % me)
+        pub.publish(signer.message(content='hello(9)', **dict(base, sender='Mallory')))
         self.expect(r'dropped message tell from Mallory .*the sender a Jason atom')
-        pub.publish(AgentMessage(content='hello(9)', **dict(base, performative='')))
+        pub.publish(signer.message(content='hello(9)', **dict(base, performative='')))
         self.expect(r"dropped message  from mallory .*performative '' is not a Jason atom")
+        # a well-formed message from a process not announced yet is delivered (and counts as presence)
+        pub.publish(signer.message(content='hello(9)', **base))
+        self.expect(r'^\[alice\] told hello\(9\) by mallory$')
         ppub.publish(Presence(mas_id='', agents=['x'], period=0.5))
         self.expect(r'ignored a presence announcement without mas_id')
-        ppub.publish(Presence(mas_id='/intruder2', incarnation=1, agents=['Bad Name', 'eve'], period=0.5))
-        self.expect(r"ignored agent name 'Bad Name' announced by /intruder2")
-        # a well-formed message from an unannounced process is delivered (and counts as presence)
-        pub.publish(AgentMessage(content='hello(9)', **base))
-        self.expect(r'^\[alice\] told hello\(9\) by mallory$')
+        ppub.publish(signer.presence(['Bad Name', 'mallory']))
+        self.expect(r"ignored agent name 'Bad Name' announced by %s" % me)
         # and the real agents still talk
         run(self.log, self.r1, 'alice', 'send(bob, tell, hello(10))', 'sent')
         self.expect(r'^\[bob\] told hello\(10\) by alice$')

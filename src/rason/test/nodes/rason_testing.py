@@ -9,9 +9,10 @@ import threading
 import time
 
 import rosgraph
+import rospkg
 import rospy
 from rosgraph_msgs.msg import Log
-from rason_msgs.msg import Event, Perception
+from rason_msgs.msg import AgentMessage, Event, Perception, Presence
 
 
 class LogWatcher(object):
@@ -127,12 +128,16 @@ def run(log, robot, agent, text, expect, timeout=15.0):
     return re.search(r'^\[%s\] %d (.*)$' % (agent, n), found[0][3]).group(1)
 
 
-def start_mas(ns, mas2j, **params):
-    """Start a rason_mas in namespace ns with ~params; stop it with :func:`stop_mas` or SIGKILL."""
+def start_mas(ns, mas2j, output=None, **params):
+    """Start a rason_mas in namespace ns with ~params; stop it with :func:`stop_mas` or SIGKILL.
+
+    :param output: where its stdout and stderr go (e.g. ``subprocess.PIPE``); None: this process's
+    """
     args = ['rosrun', 'rason_bridge', 'rason_mas', mas2j, '__ns:=/' + ns]
     args += ['_%s:=%s' % (k, v) for k, v in params.items()]
     # rosrun execs the node, so the pid is the node's own (SIGKILL hits the JVM too)
-    return subprocess.Popen(args)
+    return subprocess.Popen(args, stdout=output, stderr=subprocess.STDOUT if output else None,
+                            universal_newlines=True)
 
 
 def stop_mas(proc, timeout=20.0):
@@ -144,3 +149,41 @@ def stop_mas(proc, timeout=20.0):
             proc.kill()
             proc.wait()
     return proc.returncode
+
+
+class FleetSigner(object):
+    """Signs agent messages and presence as a rason_mas of the fleet does (Java's FleetAuth with
+    the fleet key of ROS_HOME), as this test node: for tests whose input must get past the
+    authentication (e.g. malformed content from a keyed node). Starts a JVM in the test process."""
+
+    def __init__(self, key_file=None):
+        import jpype
+        from rason_bridge.fleet_auth import default_key_file
+        from rason_bridge.jvm import start_jvm
+        start_jvm()
+        self.mas_id = rospy.get_name()  # receivers compare it with the publishing node's name
+        self.incarnation = time.time_ns()
+        path = key_file or default_key_file(rospkg.get_ros_home())
+        keys = jpype.JClass('rason.messaging.FleetKeys').load(jpype.JClass('java.nio.file.Paths').get(path))
+        self._auth = jpype.JClass('rason.messaging.FleetAuth')()
+        self._auth.require(keys)
+        self._auth.setIncarnation(self.incarnation)
+        self._wire = jpype.JClass('rason.messaging.WireMessage')
+        self._strings = jpype.JArray(jpype.JString)
+        self._as_list = jpype.JClass('java.util.Arrays').asList
+
+    def message(self, sender, receiver_mas, receiver, performative, content, msg_id='', in_reply_to=''):
+        """An AgentMessage from agent ``sender`` of this node, signed (call in publishing order)."""
+        s = self._auth.sign(self._wire(self.mas_id, sender, receiver_mas, receiver, performative, content, msg_id,
+                                       in_reply_to))
+        return AgentMessage(sender_mas=self.mas_id, sender=sender, receiver_mas=receiver_mas, receiver=receiver,
+                            performative=performative, content=content, msg_id=msg_id, in_reply_to=in_reply_to,
+                            incarnation=int(s.incarnation()), sequence=int(s.sequence()), stamp=int(s.stamp()),
+                            key_id=str(s.keyId()), mac=bytes(s.mac()))
+
+    def presence(self, agents, leaving=False, period=0.5):
+        """This node's presence announcing ``agents``, signed (call in publishing order)."""
+        s = self._auth.signPresence(self.mas_id, self._as_list(self._strings(list(agents))), period, leaving)
+        return Presence(mas_id=self.mas_id, incarnation=int(s.incarnation()), agents=list(agents), period=period,
+                        leaving=leaving, sequence=int(s.sequence()), stamp=int(s.stamp()), key_id=str(s.keyId()),
+                        mac=bytes(s.mac()))

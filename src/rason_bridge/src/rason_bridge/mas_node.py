@@ -6,7 +6,8 @@ live on the Java side (jason_lib, behind ``rason.bridge.Bridge``); this node
 pushes ROS input and the ROS time in, and one thread of it publishes what the
 agents queued in the Java ``Outbox``, so an agent's thread never calls Python.
 The decisions that are Python's are in :mod:`rason_bridge.outbox` and
-:mod:`rason_bridge.peers`.
+:mod:`rason_bridge.peers`; the fleet authentication's parameters in
+:mod:`rason_bridge.fleet_auth` (signing and checking are Java's).
 """
 import logging
 import os
@@ -15,10 +16,12 @@ import threading
 import time
 
 import rosgraph
+import rospkg
 import rospy
 from rospy.impl.rosout import RosOutHandler
 from rason_msgs.msg import Action, AgentMessage, Event, Perception, Presence
 
+from rason_bridge.fleet_auth import OFF, auth_settings, no_key_help, to_int64, to_uint64
 from rason_bridge.jvm import JvmError, start_jvm
 from rason_bridge.exits import exit_for_shutdown
 from rason_bridge.limits import apply_input_limits
@@ -33,6 +36,16 @@ _JAVA_INFO = 800
 
 def _ros_now_ns():
     return rospy.get_rostime().to_nsec()
+
+
+def _publisher(msg):
+    """The node that published msg (its connection's callerid), '' if unknown."""
+    header = msg._connection_header
+    return header.get('callerid', '') if header else ''
+
+
+class FleetKeyError(RuntimeError):
+    """Fleet authentication is required and no usable key could be loaded."""
 
 
 #: Presence: how often the fleet checks links and silences (wall clock, seconds).
@@ -119,7 +132,8 @@ class RasonMasNode(object):
         self._message_pub = rospy.Publisher(messages_topic, AgentMessage, queue_size=1000, tcp_nodelay=True)
         self._presence_pub = rospy.Publisher(presence_topic, Presence, queue_size=10, tcp_nodelay=True)
         self._presence_topic = presence_topic
-        self._messages = MessageOutbox(publish=self._message_pub.publish, linked=self._linked,
+        # signed when published, in publishing order, so the sequence numbers arrive increasing
+        self._messages = MessageOutbox(publish=self._sign_and_publish, linked=self._linked,
                                        connect_wait=connect_wait)
         self._log_lines = jpype.JClass('rason.infra.RosLogHandler')
         self._log_stop = threading.Event()
@@ -141,6 +155,26 @@ class RasonMasNode(object):
     def set_trust(self, value):
         """Rules of the ~trust parameter (see :mod:`rason_bridge.trust`); ValueError if one is bad."""
         apply_trust(self._bridge, value, self._jpype.JException)
+
+    def configure_auth(self, settings):
+        """Sign and check messages and presence with the fleet key, or not at all (before :meth:`start`).
+
+        :param settings: :class:`rason_bridge.fleet_auth.AuthSettings`
+        :raises FleetKeyError: authentication is required and the key cannot be loaded (the message says why)
+        """
+        if settings.mode == OFF:
+            self._bridge.fleetAuthOff()
+            return
+        self._bridge.setAuthWindowNanos(int(settings.window * 1e9))
+        try:
+            if settings.key_text is not None:
+                rospy.logwarn('the fleet key comes from ~fleet_key: anyone who reaches the ROS master can read the '
+                              'parameter server, and with it command these agents; prefer ~fleet_key_file')
+                self._bridge.requireFleetKeyText(settings.key_text, '~fleet_key')
+            else:
+                self._bridge.requireFleetKeyFile(settings.key_file)
+        except self._jpype.JException as e:
+            raise FleetKeyError(str(e.getMessage()))
 
     # ---- life cycle -----------------------------------------------------------------
 
@@ -244,8 +278,11 @@ class RasonMasNode(object):
         if msg.sender_mas == self.mas_id or (msg.receiver_mas and msg.receiver_mas != self.mas_id):
             return  # our own, or for another process: the common case, kept out of Java
         try:
+            # checked (authentication, then form) and parsed in Java
             self._bridge.deliverMessage(msg.sender_mas, msg.sender, msg.receiver_mas, msg.receiver,
-                                     msg.performative, msg.content, msg.msg_id, msg.in_reply_to)
+                                        msg.performative, msg.content, msg.msg_id, msg.in_reply_to,
+                                        to_int64(msg.incarnation), to_int64(msg.sequence), to_int64(msg.stamp),
+                                        msg.key_id, msg.mac, _publisher(msg))
         except Exception as e:  # a bug must not kill the subscriber thread
             rospy.logerr('could not deliver message from %s (%s): %s', msg.sender, msg.sender_mas, e)
 
@@ -257,7 +294,9 @@ class RasonMasNode(object):
                                    msg.mas_id, msg.incarnation)
             return
         try:
-            self._bridge.presenceAnnounced(msg.mas_id, msg.incarnation, msg.agents, msg.leaving)
+            self._bridge.presenceAnnounced(msg.mas_id, msg.incarnation, msg.agents, msg.period, msg.leaving,
+                                           to_int64(msg.sequence), to_int64(msg.stamp), msg.key_id, msg.mac,
+                                           _publisher(msg))
         except Exception as e:
             rospy.logerr('could not handle presence of %r: %s', msg.mas_id, e)
 
@@ -287,11 +326,14 @@ class RasonMasNode(object):
             self._publish_presence(leaving)
 
     def _publish_presence(self, leaving):
+        # under _announce_lock: signed in publishing order
         try:
+            agents = [str(n) for n in self._bridge.agentNames()]
+            signed = self._bridge.signPresence(agents, self._presence_period, leaving)
             self._presence_pub.publish(Presence(
-                mas_id=self.mas_id, incarnation=self._incarnation,
-                agents=[str(n) for n in self._bridge.agentNames()],
-                period=self._presence_period, leaving=leaving))
+                mas_id=self.mas_id, incarnation=to_uint64(signed.incarnation()), agents=agents,
+                period=self._presence_period, leaving=leaving, sequence=to_uint64(signed.sequence()),
+                stamp=to_uint64(signed.stamp()), key_id=str(signed.keyId()), mac=bytes(signed.mac())))
         except Exception as e:  # topic closed at shutdown
             rospy.logdebug('presence not announced: %s', e)
 
@@ -362,6 +404,17 @@ class RasonMasNode(object):
         msg = Action(agent=agent, action_id=action_id, action=Action.CANCEL, parameters=[reason])
         if self._outbox.submit(msg) == DEFERRED:
             self._outbox_wakeup.set()
+
+    def _sign_and_publish(self, msg):
+        """Fills in the authentication fields and publishes (the message outbox calls it in publishing order)."""
+        signed = self._bridge.signMessage(msg.receiver_mas, msg.sender, msg.receiver, msg.performative, msg.content,
+                                          msg.msg_id, msg.in_reply_to)
+        msg.incarnation = to_uint64(signed.incarnation())
+        msg.sequence = to_uint64(signed.sequence())
+        msg.stamp = to_uint64(signed.stamp())
+        msg.key_id = str(signed.keyId())
+        msg.mac = bytes(signed.mac())
+        self._message_pub.publish(msg)
 
     def _publish_message(self, msg):
         try:
@@ -456,7 +509,9 @@ def main(argv=None):
     ``ask_timeout`` (float s, 60; 0 disables), ``perception_manager`` (str, per_source),
     ``decomposer_grace`` (float s, 0.5), and the input limits ``max_literal_length`` (int, 4096),
     ``max_content_length`` (int, 65536), ``max_nesting`` (int, 32), ``max_term_depth`` (int, 512),
-    ``max_literals`` (int, 1000) (see :mod:`rason_bridge.limits`).
+    ``max_literals`` (int, 1000) (see :mod:`rason_bridge.limits`), and the fleet authentication's
+    ``fleet_auth`` (required or off), ``fleet_key_file`` (str, $ROS_HOME/rason/fleet.key),
+    ``fleet_key`` (str), ``auth_window`` (float s, 60; 0 disables) (see :mod:`rason_bridge.fleet_auth`).
     Publishes the hosted agents' names on the ``~agents`` parameter.
     """
     args = rospy.myargv(argv if argv is not None else sys.argv)
@@ -486,6 +541,7 @@ def main(argv=None):
                             decomposer_grace=float(rospy.get_param('~decomposer_grace', 0.5)))
         apply_input_limits(node.input_limits(), lambda name, default: rospy.get_param('~' + name, default))
         node.set_trust(rospy.get_param('~trust', {}))
+        auth = auth_settings(lambda name, default: rospy.get_param('~' + name, default), rospkg.get_ros_home())
     except ValueError as e:
         if node is not None:
             node.close_log()
@@ -496,6 +552,13 @@ def main(argv=None):
     except RuntimeError as e:
         node.close_log()  # Jason's own errors first: the reason is among them
         rospy.logfatal('cannot run %s: %s', mas2j, e)
+        return 1
+    try:
+        node.configure_auth(auth)  # after load: Java's log lines reach rosout from then on
+    except FleetKeyError as e:
+        node.close_log()
+        rospy.logfatal('fleet authentication is required (~fleet_auth) but there is no usable fleet key: %s. %s',
+                       e, no_key_help(auth))
         return 1
     rospy.set_param('~agents', names)
     rospy.loginfo('running %s with agents %s', os.path.basename(mas2j), ', '.join(names))
@@ -511,6 +574,9 @@ def main(argv=None):
 def run():
     """Entry point of the installed script: exit without waiting for stray JVM threads."""
     code = main()
+    if not rospy.core.is_shutdown() and rospy.core.is_initialized():
+        # a start-up error (bad parameter, no key): leave the master's lists as a clean stop does
+        rospy.signal_shutdown('exiting with status %d' % code)
     logging.shutdown()
     sys.stdout.flush()
     sys.stderr.flush()

@@ -1,5 +1,6 @@
 package rason.bridge;
 
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
@@ -14,10 +15,13 @@ import jason.infra.local.LocalAgArch;
 import rason.RosAgArch;
 import rason.action.ActionEvent;
 import rason.messaging.Fleet;
+import rason.messaging.FleetAuth;
+import rason.messaging.FleetKeys;
 import rason.messaging.Messages;
 import rason.messaging.RateLimitedLog;
 import rason.messaging.TrustPolicy;
 import rason.messaging.WarnOnce;
+import rason.messaging.WireMessage;
 import rason.perception.PerceptionManagers;
 import rason.perception.Perceptions;
 
@@ -290,9 +294,76 @@ public final class Bridge implements Fleet.Listener {
             arch.tick(nowNanos, actionTimeoutNanos, perceptionTtlNanos);
     }
 
-    /** A rason_msgs/Presence arrived (see {@link Fleet#presenceAnnounced}). */
-    public void presenceAnnounced(String mas, long incarnation, String[] names, boolean leaving) {
-        fleet.presenceAnnounced(mas, incarnation, names, leaving);
+    /**
+     * A rason_msgs/Presence arrived (see {@link Fleet#presenceAnnounced}): its fields as published, the
+     * uint64 ones as their bits.
+     *
+     * @param publisher the node that published it (from the connection; "" if unknown)
+     */
+    public void presenceAnnounced(String mas, long incarnation, String[] names, float period, boolean leaving,
+            long sequence, long stamp, String keyId, byte[] mac, String publisher) {
+        fleet.presenceAnnounced(mas, names, leaving, period, new FleetAuth.Signed(incarnation, sequence, stamp, keyId, mac),
+                publisher);
+    }
+
+    /** The authentication fields of our next presence announcement; sign in the order of publishing. */
+    public FleetAuth.Signed signPresence(String[] agents, float period, boolean leaving) {
+        return fleet.auth().signPresence(fleet.getMasId(), List.of(agents), period, leaving);
+    }
+
+    /**
+     * The authentication fields of our next agent message (from our process, the sender_mas);
+     * sign in the order of publishing, so that the sequence numbers arrive increasing.
+     */
+    public FleetAuth.Signed signMessage(String receiverMas, String sender, String receiver, String performative,
+            String content, String msgId, String inReplyTo) {
+        return fleet.auth().sign(new WireMessage(fleet.getMasId(), sender, receiverMas, receiver, performative, content,
+                msgId, inReplyTo));
+    }
+
+    // ---- fleet authentication (the node's ~fleet_auth, ~fleet_key_file, ~fleet_key, ~auth_window) ----
+
+    /**
+     * Requires authentic messages and presence, with the keys of a key file
+     * (see {@link FleetKeys}); warns if the file is open to other users.
+     *
+     * @throws IllegalArgumentException the file cannot be read or holds no usable key (the message says why)
+     */
+    public void requireFleetKeyFile(String path) {
+        Path file = Path.of(path);
+        FleetKeys keys = FleetKeys.load(file);
+        String open = FleetKeys.tooOpen(file);
+        if (open != null)
+            logger.warning(open);
+        requireFleetKeys(keys);
+    }
+
+    /**
+     * Requires authentic messages and presence, with the keys in text (the ~fleet_key parameter).
+     *
+     * @throws IllegalArgumentException no usable key in text
+     */
+    public void requireFleetKeyText(String text, String origin) {
+        requireFleetKeys(FleetKeys.parse(text, origin));
+    }
+
+    private void requireFleetKeys(FleetKeys keys) {
+        fleet.auth().require(keys);
+        logger.info("fleet authentication: messages and presence signed with key " + keys.signing().id()
+                + ", accepted when signed with any of " + keys.ids() + " (from " + keys.origin() + ")");
+    }
+
+    /** Signs nothing and checks nothing: any node that reaches the ROS master can command the agents. */
+    public void fleetAuthOff() {
+        fleet.auth().off();
+        logger.warning("fleet authentication is OFF (~fleet_auth: off): messages and presence go out unsigned and"
+                + " are accepted from anyone; any node that reaches the ROS master can command these agents."
+                + " Only for a trusted lab network");
+    }
+
+    /** How far (wall clock) a message's stamp may be from ours; 0 or less turns the clock checks off. */
+    public void setAuthWindowNanos(long t) {
+        fleet.auth().setWindowNanos(t);
     }
 
     /** Periodic presence check with the processes our message publisher is connected to. */
@@ -315,15 +386,19 @@ public final class Bridge implements Fleet.Listener {
     }
 
     /**
-     * A rason_msgs/AgentMessage arrived. Messages for other processes and our
-     * own are ignored; malformed ones are logged and dropped.
+     * A rason_msgs/AgentMessage arrived: its fields as published, the uint64 ones as their bits.
+     * Messages for other processes and our own are ignored; those that are not
+     * authentic and malformed ones are logged and dropped.
      *
+     * @param publisher the node that published it (from the connection; "" if unknown)
      * @return how many hosted agents it was delivered to
      */
     public int deliverMessage(String senderMas, String sender, String receiverMas, String receiver,
-            String performative, String content, String msgId, String inReplyTo) {
-        Fleet.Incoming in = fleet.accept(senderMas, sender, receiverMas, receiver, performative, content,
-                registry.hosts(sender));
+            String performative, String content, String msgId, String inReplyTo, long incarnation, long sequence,
+            long stamp, String keyId, byte[] mac, String publisher) {
+        Fleet.Incoming in = fleet.accept(
+                new WireMessage(senderMas, sender, receiverMas, receiver, performative, content, msgId, inReplyTo),
+                new FleetAuth.Signed(incarnation, sequence, stamp, keyId, mac), publisher, registry.hosts(sender));
         if (in == null)
             return 0;
         var hosted = AgentRegistry.jasonAgents();

@@ -43,6 +43,7 @@ public final class Fleet {
     private final PresenceTable presence = new PresenceTable(); // guarded by itself
     private final WarnOnce warned;
     private final RateLimitedLog limited;
+    private final FleetAuth auth;
     private volatile String masId = "";
     private volatile long presenceTimeoutNanos = 2_000_000_000L;
     private volatile long incarnation = 0;
@@ -54,10 +55,24 @@ public final class Fleet {
 
     /** @param limited where dropped messages are logged (kind "dropped message"), at most a few lines per period */
     public Fleet(Logger logger, Listener listener, RateLimitedLog limited) {
+        this(logger, listener, limited, new FleetAuth());
+    }
+
+    /**
+     * @param auth signs our messages and presence and checks those of others
+     *             (required by default: configure its keys, or turn it off)
+     */
+    public Fleet(Logger logger, Listener listener, RateLimitedLog limited, FleetAuth auth) {
         this.logger = logger;
         this.listener = listener;
         this.warned = new WarnOnce(logger);
         this.limited = limited;
+        this.auth = auth;
+    }
+
+    /** The authentication of our traffic and others' (keys, window, off). */
+    public FleetAuth auth() {
+        return auth;
     }
 
     /** This process's id in agent messages and presence: the rason_mas node name. */
@@ -72,6 +87,7 @@ public final class Fleet {
     /** This process's start time, as its presence announces it: the later of two duplicates stops. */
     public void setIncarnation(long t) {
         incarnation = t;
+        auth.setIncarnation(t);
     }
 
     /** Silence after which another process counts as gone (wall clock). */
@@ -88,14 +104,32 @@ public final class Fleet {
         apply(c);
     }
 
-    /** A rason_msgs/Presence arrived. Our own announcements and malformed ones are ignored (the latter with a log line). */
-    public void presenceAnnounced(String mas, long incarnation, String[] names, boolean leaving) {
+    /**
+     * A rason_msgs/Presence arrived. Our own announcements are ignored, malformed
+     * ones with a log line, and (with authentication on) those that are not
+     * authentic with a rate-limited one: they change nothing.
+     *
+     * @param signed its authentication fields; signed.incarnation() is the announcing process's
+     * @param publisher the node that published it (from the connection; "" if unknown)
+     */
+    public void presenceAnnounced(String mas, String[] names, boolean leaving, float period, FleetAuth.Signed signed,
+            String publisher) {
         if (mas == null || mas.isEmpty()) {
             warned.warn("presence:", "ignored a presence announcement without mas_id");
             return;
         }
         if (mas.equals(masId))
             return;
+        FleetAuth.Refusal refused = auth.verifyPresence(mas, Arrays.asList(names), period, leaving, signed);
+        if (refused == null)
+            refused = auth.admit(FleetAuth.Kind.PRESENCE, mas, signed, System.nanoTime(),
+                    () -> publishedBy(mas, publisher));
+        if (refused != null) {
+            limited.warn(DROPPED_PRESENCE + " (" + refused.problem().word + ")", "dropped presence of "
+                    + InputLimits.abbreviate(mas, 100) + (leaving ? " (leaving)" : " announcing "
+                    + InputLimits.abbreviate(Arrays.toString(names), 200)) + ": " + refused.text(), System.nanoTime());
+            return;
+        }
         List<String> valid = new ArrayList<>(names.length);
         for (String n : names) {
             if (n != null && n.matches(NAME_PATTERN))
@@ -106,7 +140,7 @@ public final class Fleet {
         }
         PresenceTable.Changes c;
         synchronized (presence) {
-            c = presence.announced(mas, incarnation, valid, leaving, System.nanoTime());
+            c = presence.announced(mas, signed.incarnation(), valid, leaving, System.nanoTime());
         }
         apply(c);
     }
@@ -145,30 +179,44 @@ public final class Fleet {
 
     /**
      * Checks a rason_msgs/AgentMessage for this process and counts it as
-     * hearing from its sender's process.
+     * hearing from its sender's process. With authentication on, it must be
+     * authentic (see {@link FleetAuth}), published by its sender process, and
+     * its sender among that process's announced agents when the announcement
+     * of that run is known (a message may overtake the first announcement).
      *
+     * @param signed its authentication fields
+     * @param publisher the node that published it (from the connection; "" if unknown)
      * @param hostsSender whether this process hosts an agent of the sender's name
-     * @return the parsed message, or null if it is not for us (ignored) or malformed (logged)
+     * @return the parsed message, or null if it is not for us (ignored), not authentic or malformed (logged)
      */
-    public Incoming accept(String senderMas, String sender, String receiverMas, String receiver, String performative,
-            String content, boolean hostsSender) {
-        if (senderMas.equals(masId) || !(receiverMas.isEmpty() || receiverMas.equals(masId)))
+    public Incoming accept(WireMessage m, FleetAuth.Signed signed, String publisher, boolean hostsSender) {
+        String senderMas = m.senderMas(), sender = m.sender(), receiver = m.receiver();
+        if (senderMas.equals(masId) || !(m.receiverMas().isEmpty() || m.receiverMas().equals(masId)))
             return null;
-        String what = InputLimits.abbreviate(performative, 100) + " from " + InputLimits.abbreviate(sender, 100) + " ("
-                + InputLimits.abbreviate(senderMas, 100) + ") to "
+        String what = InputLimits.abbreviate(m.performative(), 100) + " from " + InputLimits.abbreviate(sender, 100)
+                + " (" + InputLimits.abbreviate(senderMas, 100) + ") to "
                 + (receiver.isEmpty() ? "everyone" : InputLimits.abbreviate(receiver, 100));
+        FleetAuth.Refusal refused = auth.verify(m, signed);
+        if (refused == null)
+            refused = auth.admit(FleetAuth.Kind.MESSAGE, senderMas, signed, System.nanoTime(),
+                    () -> forgedMessage(m, signed, publisher));
+        if (refused != null) {
+            limited.warn(DROPPED_MESSAGE + " (" + refused.problem().word + ")",
+                    "dropped message " + what + ": " + refused.text(), System.nanoTime());
+            return null;
+        }
         if (senderMas.isEmpty() || !sender.matches(NAME_PATTERN)) {
             dropped("dropped message " + what + ": sender and sender_mas must be set, and the sender a Jason atom");
             return null;
         }
-        if (!performative.matches(NAME_PATTERN)) {
-            dropped("dropped message " + what + ": performative '" + InputLimits.abbreviate(performative, 100)
+        if (!m.performative().matches(NAME_PATTERN)) {
+            dropped("dropped message " + what + ": performative '" + InputLimits.abbreviate(m.performative(), 100)
                     + "' is not a Jason atom");
             return null;
         }
         Term term;
         try {
-            term = Messages.parseContent(content);
+            term = Messages.parseContent(m.content());
         } catch (IllegalArgumentException e) {
             dropped("dropped message " + what + ": " + e.getMessage());
             return null;
@@ -184,6 +232,34 @@ public final class Fleet {
         return new Incoming(what, term);
     }
 
+    /** Checks of an authentic message against what its process announced (under the replay lock of {@link FleetAuth#admit}). */
+    private FleetAuth.Refusal forgedMessage(WireMessage m, FleetAuth.Signed signed, String publisher) {
+        FleetAuth.Refusal r = publishedBy(m.senderMas(), publisher);
+        if (r != null)
+            return r;
+        synchronized (presence) {
+            long announced = presence.announcedIncarnation(m.senderMas());
+            if (announced == 0 || signed.incarnation() > announced)
+                return null; // not announced yet (or restarted since): its presence may come on another connection
+            if (signed.incarnation() < announced)
+                return new FleetAuth.Refusal(FleetAuth.Problem.REPLAYED, "from an earlier run of " + m.senderMas()
+                        + " (incarnation " + signed.incarnation() + "; it now runs " + announced + ")");
+            if (!presence.announces(m.senderMas(), m.sender()))
+                return new FleetAuth.Refusal(FleetAuth.Problem.FORGED, InputLimits.abbreviate(m.senderMas(), 100)
+                        + " does not host " + InputLimits.abbreviate(m.sender(), 100) + " (it announces "
+                        + presence.agentsOf(m.senderMas()) + ")");
+            return null;
+        }
+    }
+
+    /** A signed message or presence must come from the node it names: a copy published by another node is forged. */
+    private static FleetAuth.Refusal publishedBy(String mas, String publisher) {
+        if (publisher == null || publisher.isEmpty() || publisher.equals(mas))
+            return null;
+        return new FleetAuth.Refusal(FleetAuth.Problem.FORGED, "published by node "
+                + InputLimits.abbreviate(publisher, 100) + ", not by " + InputLimits.abbreviate(mas, 100));
+    }
+
     /** Logs a message for an agent this process does not host, once per name. */
     public void noSuchReceiver(String name, String what) {
         if (warned.firstTime("receiver:" + name))
@@ -191,8 +267,10 @@ public final class Fleet {
                     + "' here (logged once per name)");
     }
 
-    /** Kind of the rate-limited lines of dropped messages. */
+    /** Kind of the rate-limited lines of dropped messages (those not authentic: "dropped message (reason)"). */
     public static final String DROPPED_MESSAGE = "dropped message";
+    /** Kind of the rate-limited lines of presence that is not authentic: "dropped presence (reason)". */
+    public static final String DROPPED_PRESENCE = "dropped presence";
 
     private void dropped(String line) {
         limited.warn(DROPPED_MESSAGE, line, System.nanoTime());

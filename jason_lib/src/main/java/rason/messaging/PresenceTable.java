@@ -204,6 +204,24 @@ public final class PresenceTable {
         return "no agent '" + agent + "' is present (neither in this process nor announced by another)";
     }
 
+    /** The incarnation peer masId last announced; 0 if it has not announced itself (unknown, or known from messages only). */
+    public long announcedIncarnation(String masId) {
+        Peer p = peers.get(masId);
+        return p == null ? 0 : p.incarnation;
+    }
+
+    /** Whether masId's current announcement lists agent. */
+    public boolean announces(String masId, String agent) {
+        Peer p = peers.get(masId);
+        return p != null && p.incarnation != 0 && p.agents.contains(agent);
+    }
+
+    /** The agents peer masId is known to host (empty if unknown). */
+    public List<String> agentsOf(String masId) {
+        Peer p = peers.get(masId);
+        return p == null ? List.of() : new ArrayList<>(p.agents);
+    }
+
     /** Ids of the peers currently known (for tests and diagnostics). */
     public List<String> peerIds() {
         return new ArrayList<>(peers.keySet());

@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.Collection;
 import java.util.logging.Logger;
 
 import org.junit.jupiter.api.Test;
@@ -47,27 +46,15 @@ class BoundedMessagesTest {
         Logger logger = Logger.getLogger("test.bounded.fleet");
         RateLimitedLogTest.Lines lines = RateLimitedLogTest.Lines.of(logger);
         RateLimitedLog limited = new RateLimitedLog(logger, 5, 3_600_000_000_000L);
-        Fleet fleet = new Fleet(logger, new Fleet.Listener() {
-            @Override
-            public void reachableChanged() {
-            }
-
-            @Override
-            public void receiversLost(Collection<String> names) {
-            }
-
-            @Override
-            public void mustStop(String why) {
-            }
-        }, limited);
-        fleet.setMasId("/me/rason_mas");
+        Fleet fleet = SigningPeer.fleet(logger, limited, "/me/rason_mas", 1);
+        SigningPeer other = new SigningPeer("/other/rason_mas", 1);
         for (int i = 0; i < 100; i++)
-            assertNull(fleet.accept("/other/rason_mas", "mallory", "", "alice", "tell", "hello(", false));
+            assertNull(other.send(fleet, "mallory", "alice", "tell", "hello("));
         assertEquals(5, lines.records.size());
         assertTrue(lines.texts().get(0).startsWith(
                 "dropped message tell from mallory (/other/rason_mas) to alice: content 'hello(' is not a Jason term"),
                 lines.texts().get(0));
         assertEquals(95, limited.suppressed(Fleet.DROPPED_MESSAGE));
-        assertNotNull(fleet.accept("/other/rason_mas", "mallory", "", "alice", "tell", "hello", false));
+        assertNotNull(other.send(fleet, "mallory", "alice", "tell", "hello"));
     }
 }

@@ -14,7 +14,8 @@ import org.junit.jupiter.api.Test;
 class FleetTest {
 
     private final List<String> stops = new ArrayList<>();
-    private final Fleet fleet = new Fleet(Logger.getLogger("test.fleet"), new Fleet.Listener() {
+    private final Logger logger = Logger.getLogger("test.fleet");
+    private final Fleet fleet = new Fleet(logger, new Fleet.Listener() {
         @Override
         public void reachableChanged() {
         }
@@ -27,7 +28,13 @@ class FleetTest {
         public void mustStop(String why) {
             stops.add(why);
         }
-    });
+    }, new RateLimitedLog(logger), authWithKeyA());
+
+    private static FleetAuth authWithKeyA() {
+        FleetAuth auth = new FleetAuth();
+        auth.require(SigningPeer.keys(SigningPeer.KEY_A));
+        return auth;
+    }
 
     private void hosting(String masId, long incarnation, String... agents) {
         fleet.setMasId(masId);
@@ -38,8 +45,9 @@ class FleetTest {
     @Test
     void theLaterOfTwoProcessesHostingAnAgentInOneNamespaceStopsOnce() {
         hosting("/faulty/rason_mas_2", 200, "faulty");
-        fleet.presenceAnnounced("/faulty/rason_mas", 100, new String[] { "faulty" }, false);
-        fleet.presenceAnnounced("/faulty/rason_mas", 100, new String[] { "faulty" }, false);
+        SigningPeer first = new SigningPeer("/faulty/rason_mas", 100);
+        first.announce(fleet, false, "faulty");
+        first.announce(fleet, false, "faulty");
         assertEquals(1, stops.size());
         assertTrue(stops.get(0).contains("'faulty' is already hosted by /faulty/rason_mas"), stops.get(0));
     }
@@ -47,14 +55,14 @@ class FleetTest {
     @Test
     void theEarlierOneGoesOn() {
         hosting("/faulty/rason_mas", 100, "faulty");
-        fleet.presenceAnnounced("/faulty/rason_mas_2", 200, new String[] { "faulty" }, false);
+        new SigningPeer("/faulty/rason_mas_2", 200).announce(fleet, false, "faulty");
         assertTrue(stops.isEmpty());
     }
 
     @Test
     void theSameNameInAnotherNamespaceIsAClashNotAStop() {
         hosting("/robot1/rason_mas", 200, "scout");
-        fleet.presenceAnnounced("/robot2/rason_mas", 100, new String[] { "scout" }, false);
+        new SigningPeer("/robot2/rason_mas", 100).announce(fleet, false, "scout");
         assertTrue(stops.isEmpty());
     }
 

@@ -1,0 +1,75 @@
+"""rason_mas's fleet authentication ~params: defaults, what is refused (naming the parameter), the
+uint64 <-> Java long conversion."""
+import pytest
+
+from rason_bridge.fleet_auth import (DEFAULT_WINDOW, OFF, REQUIRED, auth_settings, default_key_file,
+                                     no_key_help, to_int64, to_uint64)
+
+ROS_HOME = '/home/robot/.ros'
+
+
+def settings(**given):
+    return auth_settings(lambda name, default: given.get(name, default), ROS_HOME)
+
+
+def test_defaults_require_the_key_file_under_ros_home():
+    s = settings()
+    assert s.mode == REQUIRED
+    assert s.key_file == '/home/robot/.ros/rason/fleet.key' == default_key_file(ROS_HOME)
+    assert s.key_text is None
+    assert s.window == DEFAULT_WINDOW == 60.0
+
+
+def test_off_also_as_yaml_reads_it():
+    assert settings(fleet_auth='off').mode == OFF
+    assert settings(fleet_auth=False).mode == OFF  # _fleet_auth:=off on the command line
+    assert settings(fleet_auth=True).mode == REQUIRED
+    assert settings(fleet_auth='required').mode == REQUIRED
+
+
+@pytest.mark.parametrize('bad', ['yes', 'Required', '', 0, None])
+def test_an_unknown_mode_is_refused(bad):
+    with pytest.raises(ValueError, match="fleet_auth must be 'required' or 'off'"):
+        settings(fleet_auth=bad)
+
+
+def test_the_key_file_parameter_and_home_expansion(monkeypatch):
+    monkeypatch.setenv('HOME', '/home/op')
+    assert settings(fleet_key_file='/etc/rason/fleet.key').key_file == '/etc/rason/fleet.key'
+    assert settings(fleet_key_file='~/fleet.key').key_file == '/home/op/fleet.key'
+    assert settings(fleet_key_file='').key_file == default_key_file(ROS_HOME), 'a launch arg left empty'
+
+
+def test_the_key_parameter():
+    s = settings(fleet_key='k' * 40)
+    assert s.key_text == 'k' * 40
+    assert settings(fleet_key='').key_text is None
+    with pytest.raises(ValueError, match='fleet_key must be a string'):
+        settings(fleet_key=1234567890123456789012345678901234567890)
+    with pytest.raises(ValueError, match='not both'):
+        settings(fleet_key='k' * 40, fleet_key_file='/etc/fleet.key')
+
+
+@pytest.mark.parametrize('window', [0, 0.5, 10, 3600.0])
+def test_windows(window):
+    assert settings(auth_window=window).window == float(window)
+
+
+@pytest.mark.parametrize('bad', [-1, 'long', True, None, float('nan')])
+def test_a_bad_window_is_refused(bad):
+    with pytest.raises(ValueError, match='auth_window'):
+        settings(auth_window=bad)
+
+
+def test_the_help_names_the_file_and_the_tool():
+    text = no_key_help(settings(fleet_key_file='/etc/fleet.key'))
+    assert 'rosrun rason_bridge fleet_key /etc/fleet.key' in text
+    assert '~fleet_auth to off' in text
+    assert '~fleet_key' in no_key_help(settings(fleet_key='short'))
+
+
+@pytest.mark.parametrize('u64, i64', [(0, 0), (1, 1), (2 ** 63 - 1, 2 ** 63 - 1), (2 ** 63, -2 ** 63),
+                                      (2 ** 64 - 1, -1)])
+def test_uint64_fields_keep_their_bits_as_java_longs(u64, i64):
+    assert to_int64(u64) == i64
+    assert to_uint64(i64) == u64
