@@ -18,7 +18,7 @@ import rason.messaging.Messages;
 import rason.messaging.RateLimitedLog;
 import rason.messaging.WarnOnce;
 import rason.perception.PerceptionManagers;
-import rason.perception.Perceptions;
+import rason.perception.PerceptionSources;
 
 /**
  * Where one rospy process meets the agents its JVM hosts (one per JVM, since
@@ -40,6 +40,7 @@ public final class Bridge implements Fleet.Listener {
     private final RateLimitedLog limited = new RateLimitedLog(logger);
     private final Fleet fleet = new Fleet(logger, this, limited);
     private final WarnOnce warned = new WarnOnce(logger);
+    private final PerceptionSources sources = new PerceptionSources();
     private final Object presencePushLock = new Object();
     // Ids start at a random point of each run, so a restarted process (or a second one for the
     // same agent name) does not reuse the ids a decomposer may still hold; 0 is never used
@@ -126,9 +127,10 @@ public final class Bridge implements Fleet.Listener {
 
     // ---- life cycle --------------------------------------------------------------------
 
-    /** A rospy node takes the outbox and the log from now on. */
+    /** A rospy node takes the outbox and the log from now on (and the sources an earlier one heard are forgotten). */
     public void attach() {
         shutdownReason = null;
+        sources.clear();
         outbox.open();
         attached = true;
     }
@@ -197,6 +199,8 @@ public final class Bridge implements Fleet.Listener {
     /**
      * A rason_msgs/Perception arrived: parse it once and hand it to every agent.
      * Unparsable literals are logged with their source and dropped; the rest is kept.
+     * Called by one thread of the node, with the newest message of a source (see the
+     * node's coalescing); a literal the source's previous message had is not parsed again.
      *
      * @return how many literals were accepted
      */
@@ -209,19 +213,24 @@ public final class Bridge implements Fleet.Listener {
                     System.nanoTime());
             return 0;
         }
-        List<Literal> literals = new ArrayList<>(texts.length);
-        for (String text : texts) {
-            try {
-                literals.add(Perceptions.parse(text, limits));
-            } catch (IllegalArgumentException e) {
-                limited.warn(DROPPED_PERCEPTION, "dropped perception '" + InputLimits.abbreviate(text, 200)
-                        + "' from source '" + shownSource + "': " + e.getMessage(), System.nanoTime());
-            }
+        List<Literal> literals = sources.parse(source, texts, nowNanos, limits,
+                (text, why) -> limited.warn(DROPPED_PERCEPTION, "dropped perception '" + InputLimits.abbreviate(text, 200)
+                        + "' from source '" + shownSource + "': " + why, System.nanoTime()));
+        if (literals == null) {
+            limited.warn(DROPPED_PERCEPTION, "dropped perception message from source '" + shownSource + "': more than "
+                    + limits.maxSources() + " sources heard within ~perception_ttl and this one is new"
+                    + " (the others' percepts are unchanged)", System.nanoTime());
+            return 0;
         }
         List<Literal> shared = List.copyOf(literals);
         for (RosAgArch arch : registry.all())
             arch.perceptionUpdate(source, shared, nowNanos);
         return shared.size();
+    }
+
+    /** The perception sources remembered now (bounded by {@link InputLimits#maxSources()}). */
+    public int perceptionSources() {
+        return sources.size();
     }
 
     /**
@@ -284,6 +293,7 @@ public final class Bridge implements Fleet.Listener {
     public void tick(long nowNanos) {
         clock.set(nowNanos);
         limited.tick(System.nanoTime());
+        sources.expire(nowNanos, perceptionTtlNanos);
         for (RosAgArch arch : registry.all())
             arch.tick(nowNanos, actionTimeoutNanos, perceptionTtlNanos);
     }
