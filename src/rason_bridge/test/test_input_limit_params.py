@@ -13,19 +13,19 @@ def test_defaults_are_the_java_defaults():
     limits = InputLimits()
     apply_input_limits(limits, lambda name, default: default)
     fresh = InputLimits()
-    assert (limits.maxLiteralLength(), limits.maxContentLength(), limits.maxNesting(), limits.maxTermDepth(),
-            limits.maxLiterals()) == (fresh.maxLiteralLength(), fresh.maxContentLength(), fresh.maxNesting(),
-                                      fresh.maxTermDepth(), fresh.maxLiterals())
+    for getter, _ in INPUT_LIMIT_PARAMS.values():
+        assert getattr(limits, getter)() == getattr(fresh, getter)()
+    assert limits.maxSources() == 1000
 
 
 def test_each_parameter_sets_its_limit():
     limits = InputLimits()
     given = {'max_literal_length': 100, 'max_content_length': 200, 'max_nesting': 3, 'max_term_depth': 40,
-             'max_literals': 7}
+             'max_literals': 7, 'max_sources': 9}
     assert set(given) == set(INPUT_LIMIT_PARAMS)
     apply_input_limits(limits, lambda name, default: given[name])
     assert (limits.maxLiteralLength(), limits.maxContentLength(), limits.maxNesting(), limits.maxTermDepth(),
-            limits.maxLiterals()) == (100, 200, 3, 40, 7)
+            limits.maxLiterals(), limits.maxSources()) == (100, 200, 3, 40, 7, 9)
 
 
 @pytest.mark.parametrize('bad', [0, -5, 2.5, 'many', True, None])

@@ -7,6 +7,7 @@ INPUT_LIMIT_PARAMS = {
     'max_nesting': ('maxNesting', 'setMaxNesting'),
     'max_term_depth': ('maxTermDepth', 'setMaxTermDepth'),
     'max_literals': ('maxLiterals', 'setMaxLiterals'),
+    'max_sources': ('maxSources', 'setMaxSources'),
 }
 
 

@@ -18,6 +18,7 @@ import rosgraph
 import rospy
 from rason_msgs.msg import Action, AgentMessage, Event, Perception, Presence
 
+from rason_bridge.coalesce import PerceptionCoalescer
 from rason_bridge.jvm import JvmError, start_jvm
 from rason_bridge.limits import apply_input_limits
 from rason_bridge.outbox import DEFERRED, NO_DECOMPOSER, ActionOutbox
@@ -39,6 +40,10 @@ _LOG_POLL = 0.02
 _LOG_BATCH = 500
 #: How long the outbound thread blocks in Java waiting for the agents' next action or message (ms).
 _OUTBOUND_WAIT_MS = 200
+#: How long the perception thread waits for a message before it looks at its stop flag (s),
+#: and how often at most it logs what a flood made it skip (s, wall clock).
+_PERCEIVE_WAIT = 0.2
+_COALESCED_LOG_PERIOD = 10.0
 
 
 class RasonMasNode(object):
@@ -126,6 +131,8 @@ class RasonMasNode(object):
         self._action_item = jpype.JClass(outbound + 'Action')
         self._cancel_item = jpype.JClass(outbound + 'Cancel')
         self._events_sub = None
+        self._perceptions = None  # the coalescer, made in start() once the limits are set
+        self._perceive_thread = None
         self._message_item = jpype.JClass(outbound + 'AgentMessage')
         self._stop_item = jpype.JClass(outbound + 'Stop')
         self._bridge.attach()  # the agents' outbox and log are ours from now on
@@ -158,6 +165,9 @@ class RasonMasNode(object):
     def start(self):
         """Subscribe to the jason/* topics and start the agents' reasoning."""
         self._outbox.refresh_listed()
+        self._perceptions = PerceptionCoalescer(max_sources=int(self._bridge.limits().maxSources()))
+        self._perceive_thread = threading.Thread(target=self._perceive_loop, name='rason_perceive', daemon=True)
+        self._perceive_thread.start()
         self._events_sub = events_sub = rospy.Subscriber('jason/event', Event, self._on_event,
                                       queue_size=None, tcp_nodelay=True)
         rospy.Subscriber('jason/perception', Perception, self._on_perception,
@@ -188,6 +198,8 @@ class RasonMasNode(object):
         # first, so the other processes stop counting on our agents at once
         self._presence_stop.set()
         self._announce(leaving=True)
+        if self._perceptions is not None:
+            self._perceptions.close()
         self._bridge.shutdown('shutdown')
         time.sleep(grace)
         if self._mas is not None:
@@ -206,7 +218,27 @@ class RasonMasNode(object):
     # ---- ROS -> agents -------------------------------------------------------------
 
     def _on_perception(self, msg):
-        self._bridge.perceive(msg.source, msg.perception, _ros_now_ns())
+        # Only stored: the newest message of its source wins (see rason_bridge.coalesce), so
+        # a flood never queues up here, in TCP or in the publisher in front of the agents.
+        self._perceptions.put(msg.source, msg.perception, _ros_now_ns())
+
+    def _perceive_loop(self):
+        # The one thread that hands perceptions to Java (parsed there, then to every agent).
+        next_summary = time.monotonic() + _COALESCED_LOG_PERIOD
+        while not self._stopping and not rospy.is_shutdown():
+            item = self._perceptions.take(_PERCEIVE_WAIT)
+            if item is not None:
+                source, literals, stamp = item
+                try:
+                    self._bridge.perceive(source, literals, stamp)
+                except Exception as e:  # a bug must not end the thread every perception goes through
+                    rospy.logerr('could not hand the perception of %r to the agents: %s', source[:100], e)
+            if time.monotonic() >= next_summary:
+                next_summary = time.monotonic() + _COALESCED_LOG_PERIOD
+                line = self._perceptions.summary()
+                if line:
+                    rospy.logwarn('perceptions come faster than the agents take them: %s in the last %.0f s',
+                                  line, _COALESCED_LOG_PERIOD)
 
     def _on_event(self, msg):
         # parsed and checked in Java; the publisher is the decomposer to watch after action_started
@@ -432,7 +464,7 @@ def main(argv=None):
     ``ask_timeout`` (float s, 60; 0 disables), ``perception_manager`` (str, per_source),
     ``decomposer_grace`` (float s, 0.5), and the input limits ``max_literal_length`` (int, 4096),
     ``max_content_length`` (int, 65536), ``max_nesting`` (int, 32), ``max_term_depth`` (int, 512),
-    ``max_literals`` (int, 1000) (see :mod:`rason_bridge.limits`).
+    ``max_literals`` (int, 1000), ``max_sources`` (int, 1000) (see :mod:`rason_bridge.limits`).
     Publishes the hosted agents' names on the ``~agents`` parameter.
     """
     args = rospy.myargv(argv if argv is not None else sys.argv)

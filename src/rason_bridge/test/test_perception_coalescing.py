@@ -1,0 +1,103 @@
+"""Perception messages coalesced per source (rason_bridge.coalesce): latest list wins,
+sources in turn, a bounded table, a summary of what was overtaken."""
+import threading
+import time
+
+import pytest
+
+from rason_bridge.coalesce import ADDED, DROPPED, REPLACED, PerceptionCoalescer
+
+
+def test_the_newest_message_of_a_source_wins():
+    c = PerceptionCoalescer()
+    assert c.put('cam', ['robot(a,1)'], 1) == ADDED
+    assert c.put('cam', ['robot(a,2)'], 2) == REPLACED
+    assert c.put('cam', [], 3) == REPLACED  # an empty list is a message like any other
+    assert c.take(0) == ('cam', [], 3)
+    assert c.take(0) is None
+
+
+def test_sources_are_taken_in_the_order_they_started_waiting():
+    c = PerceptionCoalescer()
+    c.put('a', ['x(1)'], 1)
+    c.put('b', ['y(1)'], 2)
+    c.put('a', ['x(2)'], 3)  # keeps a's place: a flooding source cannot push b back
+    c.put('c', ['z(1)'], 4)
+    assert [c.take(0)[0] for _ in range(3)] == ['a', 'b', 'c']
+
+
+def test_a_source_taken_waits_again_at_the_end():
+    c = PerceptionCoalescer()
+    c.put('a', ['x(1)'], 1)
+    c.put('b', ['y(1)'], 2)
+    assert c.take(0)[0] == 'a'
+    c.put('a', ['x(2)'], 3)
+    assert [c.take(0)[:2] for _ in range(2)] == [('b', ['y(1)']), ('a', ['x(2)'])]
+
+
+def test_a_flood_of_new_sources_is_bounded_and_the_waiting_ones_stay():
+    c = PerceptionCoalescer(max_sources=3)
+    for s in 'abc':
+        assert c.put(s, ['x'], 0) == ADDED
+    assert c.put('d', ['x'], 0) == DROPPED
+    assert c.put('a', ['x(2)'], 1) == REPLACED  # a waiting source still gets newer messages
+    assert c.waiting() == 3
+    for i in range(100000):
+        c.put('flood_%d' % i, ['x'], i)
+    assert c.waiting() == 3
+    assert c.take(0) == ('a', ['x(2)'], 1)
+    assert c.put('e', ['x'], 2) == ADDED  # room again
+
+
+def test_take_waits_for_a_message_and_close_wakes_it():
+    c = PerceptionCoalescer()
+    got = []
+    t = threading.Thread(target=lambda: got.append(c.take(10.0)))
+    t.start()
+    c.put('a', ['x'], 1)
+    t.join(5.0)
+    assert got == [('a', ['x'], 1)]
+    t = threading.Thread(target=lambda: got.append(c.take(10.0)))
+    t.start()
+    c.close()
+    t.join(5.0)
+    assert not t.is_alive() and got[-1] is None
+    c.put('b', ['y'], 2)
+    assert c.take(0) is None, 'closed: nothing more is handed on'
+
+
+def test_take_times_out():
+    c = PerceptionCoalescer()
+    t0 = time.monotonic()
+    assert c.take(0.05) is None
+    assert time.monotonic() - t0 >= 0.04
+
+
+def test_the_summary_counts_what_was_overtaken_and_dropped_once():
+    c = PerceptionCoalescer(max_sources=2)
+    assert c.summary() is None
+    for i in range(5):
+        c.put('flood', ['x(%d)' % i], i)
+    c.put('other', ['y'], 9)
+    c.put('third', ['z'], 10)
+    line = c.summary()
+    assert line.startswith("4 perception messages overtaken by a newer one of their source before the agents "
+                           "took them (source 'flood')")
+    assert "1 dropped: 2 other sources were waiting (source 'third')" in line
+    assert c.summary() is None
+
+
+def test_the_summary_names_a_few_sources_abbreviated():
+    c = PerceptionCoalescer(max_sources=1)
+    c.put('x' * 1000, [], 0)
+    for i in range(50):
+        c.put('s%d' % i, [], 0)
+    line = c.summary()
+    assert "'s0', 's1', 's2', 's3', 's4', …" in line
+    assert len(line) < 300
+
+
+@pytest.mark.parametrize('bad', [0, -1])
+def test_the_bound_must_be_positive(bad):
+    with pytest.raises(ValueError, match='max_sources'):
+        PerceptionCoalescer(max_sources=bad)
