@@ -20,7 +20,7 @@ from rason_msgs.msg import Action, AgentMessage, Event, Perception, Presence
 
 from rason_bridge.coalesce import PerceptionCoalescer
 from rason_bridge.jvm import JvmError, start_jvm
-from rason_bridge.limits import apply_input_limits
+from rason_bridge.limits import apply_input_limits, seconds_to_nanos
 from rason_bridge.outbox import DEFERRED, NO_DECOMPOSER, ActionOutbox
 from rason_bridge.peers import HELD, MessageOutbox
 
@@ -75,16 +75,16 @@ class RasonMasNode(object):
         import jpype  # the JVM is started by main() before this point
         self._jpype = jpype
         self._bridge = jpype.JClass('rason.bridge.Bridge').get()
-        self._bridge.setActionTimeoutNanos(int(action_timeout * 1e9))
-        self._bridge.setPerceptionTtlNanos(int(perception_ttl * 1e9))
+        self._bridge.setActionTimeoutNanos(seconds_to_nanos('action_timeout', action_timeout))
+        self._bridge.setPerceptionTtlNanos(seconds_to_nanos('perception_ttl', perception_ttl))
         if presence_period <= 0 or presence_timeout <= presence_period:
             raise ValueError('presence_timeout (%s s) must be longer than presence_period (%s s) > 0'
                              % (presence_timeout, presence_period))
-        self._bridge.setPresenceTimeoutNanos(int(presence_timeout * 1e9))
-        self._bridge.setAskTimeoutNanos(int(ask_timeout * 1e9))
+        self._bridge.setPresenceTimeoutNanos(seconds_to_nanos('presence_timeout', presence_timeout))
+        self._bridge.setAskTimeoutNanos(seconds_to_nanos('ask_timeout', ask_timeout))
         if decomposer_grace < 0:
             raise ValueError('decomposer_grace must be 0 s or more, not %s' % decomposer_grace)
-        self._bridge.setDecomposerGraceNanos(int(decomposer_grace * 1e9))
+        self._bridge.setDecomposerGraceNanos(seconds_to_nanos('decomposer_grace', decomposer_grace))
         self._bridge.setPresenceBeliefs(bool(presence_beliefs))
         try:
             self._bridge.setDefaultPerceptionManager(perception_manager)
