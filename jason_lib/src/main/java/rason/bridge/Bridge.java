@@ -127,10 +127,14 @@ public final class Bridge implements Fleet.Listener {
 
     // ---- life cycle --------------------------------------------------------------------
 
-    /** A rospy node takes the outbox and the log from now on (and the sources an earlier one heard are forgotten). */
+    /**
+     * A rospy node takes the outbox and the log from now on: the sources an earlier one
+     * heard are forgotten and its rate-limited warnings summarised.
+     */
     public void attach() {
         shutdownReason = null;
         sources.clear();
+        limited.endAll(System.nanoTime());
         outbox.open();
         attached = true;
     }
