@@ -49,6 +49,49 @@ def test_a_flood_of_new_sources_is_bounded_and_the_waiting_ones_stay():
     assert c.put('e', ['x'], 2) == ADDED  # room again
 
 
+def test_a_new_source_waits_for_room_before_it_is_dropped():
+    c = PerceptionCoalescer(max_sources=1)
+    c.put('a', ['x'], 0)
+    outcome = []
+    t = threading.Thread(target=lambda: outcome.append(c.put('b', ['y'], 1, wait=10.0)))
+    t.start()
+    time.sleep(0.05)
+    assert outcome == [], 'waiting for room'
+    assert c.take(0) == ('a', ['x'], 0)
+    t.join(5.0)
+    assert outcome == [ADDED]
+    assert c.take(0) == ('b', ['y'], 1)
+    c.put('a', ['x'], 2)
+    t0 = time.monotonic()
+    assert c.put('c', ['z'], 3, wait=0.05) == DROPPED
+    assert time.monotonic() - t0 >= 0.04
+
+
+def test_a_waiting_put_joins_its_source_when_another_connection_added_it():
+    c = PerceptionCoalescer(max_sources=1)
+    c.put('a', ['x'], 0)
+    outcome = []
+    t = threading.Thread(target=lambda: outcome.append(c.put('b', ['y(2)'], 2, wait=10.0)))
+    t.start()
+    time.sleep(0.05)
+    c.take(0)
+    c.put('b', ['y(1)'], 1)  # whichever comes first, the other replaces it: b waits once
+    t.join(5.0)
+    assert c.waiting() == 1 and c.take(0)[0] == 'b'
+
+
+def test_closing_releases_a_waiting_put():
+    c = PerceptionCoalescer(max_sources=1)
+    c.put('a', ['x'], 0)
+    outcome = []
+    t = threading.Thread(target=lambda: outcome.append(c.put('b', ['y'], 1, wait=10.0)))
+    t.start()
+    time.sleep(0.05)
+    c.close()
+    t.join(5.0)
+    assert outcome == [DROPPED]
+
+
 def test_take_waits_for_a_message_and_close_wakes_it():
     c = PerceptionCoalescer()
     got = []

@@ -24,8 +24,9 @@ class PerceptionCoalescer(object):
 
     Sources are taken in the order they started waiting (a message that replaces a waiting
     one keeps its source's place), so a source that floods cannot starve the others. At
-    most ``max_sources`` sources wait at once: a message from another source is dropped
-    (counted), so a flood of distinct source names cannot grow the table. Thread-safe.
+    most ``max_sources`` sources wait at once: a message from another source waits up to
+    ``wait`` s for room (holding back its publisher's connection, not the others'), then is
+    dropped (counted), so a flood of distinct source names cannot grow the table. Thread-safe.
 
     :param max_sources: sources waiting at once (1 or more)
     """
@@ -34,7 +35,9 @@ class PerceptionCoalescer(object):
         if max_sources < 1:
             raise ValueError('max_sources must be 1 or more, not %r' % (max_sources,))
         self._max_sources = max_sources
-        self._cond = threading.Condition()
+        self._lock = threading.Lock()
+        self._cond = threading.Condition(self._lock)  # a message waits
+        self._room = threading.Condition(self._lock)  # a source was taken
         self._waiting = collections.OrderedDict()  # source -> (literals, stamp)
         self._closed = False
         self._replaced = 0
@@ -42,10 +45,13 @@ class PerceptionCoalescer(object):
         self._replaced_sources = collections.OrderedDict()  # a few names for the summary
         self._dropped_sources = collections.OrderedDict()
 
-    def put(self, source, literals, stamp):
+    def put(self, source, literals, stamp, wait=0.0):
         """One message (from a rospy thread): ADDED, REPLACED (a waiting one of its source
-        was overtaken) or DROPPED (too many other sources waiting)."""
-        with self._cond:
+        was overtaken) or DROPPED (other sources filled the table for ``wait`` s)."""
+        with self._lock:
+            if source not in self._waiting and len(self._waiting) >= self._max_sources and not self._closed:
+                self._room.wait_for(lambda: source in self._waiting or self._closed
+                                    or len(self._waiting) < self._max_sources, wait)
             if source in self._waiting:
                 self._waiting[source] = (literals, stamp)
                 self._replaced += 1
@@ -62,29 +68,31 @@ class PerceptionCoalescer(object):
     def take(self, timeout=None):
         """The oldest waiting source's newest message, ``(source, literals, stamp)``; None
         after ``timeout`` s without any, or once closed."""
-        with self._cond:
+        with self._lock:
             if not self._waiting and not self._closed:
                 self._cond.wait(timeout)
             if self._closed or not self._waiting:
                 return None
             source, (literals, stamp) = self._waiting.popitem(last=False)
+            self._room.notify()
             return source, literals, stamp
 
     def close(self):
         """Wakes the worker; :meth:`take` returns None from now on."""
-        with self._cond:
+        with self._lock:
             self._closed = True
             self._cond.notify_all()
+            self._room.notify_all()
 
     def waiting(self):
         """How many sources have a message waiting."""
-        with self._cond:
+        with self._lock:
             return len(self._waiting)
 
     def summary(self):
         """A log line for the messages overtaken or dropped since the last call (None if
         none were), and the counts start again."""
-        with self._cond:
+        with self._lock:
             replaced, dropped = self._replaced, self._dropped
             replaced_sources, dropped_sources = list(self._replaced_sources), list(self._dropped_sources)
             self._replaced = self._dropped = 0

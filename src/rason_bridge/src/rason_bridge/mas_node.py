@@ -44,6 +44,9 @@ _OUTBOUND_WAIT_MS = 200
 #: and how often at most it logs what a flood made it skip (s, wall clock).
 _PERCEIVE_WAIT = 0.2
 _COALESCED_LOG_PERIOD = 10.0
+#: How long a message from a new source may hold its connection back while max_sources
+#: others wait, before it is dropped (s).
+_ROOM_WAIT = 1.0
 
 
 class RasonMasNode(object):
@@ -220,7 +223,7 @@ class RasonMasNode(object):
     def _on_perception(self, msg):
         # Only stored: the newest message of its source wins (see rason_bridge.coalesce), so
         # a flood never queues up here, in TCP or in the publisher in front of the agents.
-        self._perceptions.put(msg.source, msg.perception, _ros_now_ns())
+        self._perceptions.put(msg.source, msg.perception, _ros_now_ns(), wait=_ROOM_WAIT)
 
     def _perceive_loop(self):
         # The one thread that hands perceptions to Java (parsed there, then to every agent).
