@@ -57,6 +57,8 @@ class Harness(object):
                                    parameters=['OK', str(msg.action_id)]))
         if isinstance(report, protocol.Reacted):
             report = protocol.reaction(report, received_ms)
+        elif isinstance(report, protocol.Marked):
+            report = protocol.mark_seen(report, received_ms)
         if report is not None:
             with self._cond:
                 self._reports.append(report)
@@ -146,6 +148,14 @@ class Harness(object):
 
     def control(self, literal):
         self._perceptions.publish(Perception(source=protocol.CONTROL_SOURCE, perception=[literal]))
+
+    def publish_perception(self, msg):
+        """Any rason_msgs/Perception, on the topic (and so in the order) of the harness's own."""
+        self._perceptions.publish(msg)
+
+    def publish_event(self, msg):
+        """Any rason_msgs/Event, as a decomposer would publish it."""
+        self._events.publish(msg)
 
     def cycle(self, agent, iterations, timeout):
         """One run of the Listing 5.4 loop by ``agent``: a :class:`protocol.Cycle`."""
