@@ -26,13 +26,49 @@ def test_sources_are_taken_in_the_order_they_started_waiting():
     assert [c.take(0)[0] for _ in range(3)] == ['a', 'b', 'c']
 
 
-def test_a_source_taken_waits_again_at_the_end():
+def test_a_source_taken_waits_again_behind_the_others_of_its_kind():
     c = PerceptionCoalescer()
-    c.put('a', ['x(1)'], 1)
-    c.put('b', ['y(1)'], 2)
-    assert c.take(0)[0] == 'a'
-    c.put('a', ['x(2)'], 3)
-    assert [c.take(0)[:2] for _ in range(2)] == [('b', ['y(1)']), ('a', ['x(2)'])]
+    for s in 'abc':
+        c.put(s, ['x'], 0)
+    assert [c.take(0)[0] for _ in range(3)] == ['a', 'b', 'c']  # now all known
+    c.put('b', ['y'], 1)
+    c.put('a', ['x'], 2)
+    c.put('c', ['z'], 3)
+    assert [c.take(0)[0] for _ in range(3)] == ['b', 'a', 'c']
+
+
+def test_known_and_new_sources_take_turns():
+    c = PerceptionCoalescer()
+    for s in ('cam', 'odom'):
+        c.put(s, ['x'], 0)
+        c.take(0)
+    for i in range(500):
+        c.put('flood_%d' % i, ['x'], 1)
+    c.put('cam', ['x(2)'], 2)
+    c.put('odom', ['x(2)'], 3)
+    taken = [c.take(0)[0] for _ in range(4)]
+    # the robot's own sources do not wait behind hundreds of new names
+    assert taken == ['cam', 'flood_0', 'odom', 'flood_1']
+
+
+def test_a_flooding_known_source_leaves_new_sources_every_other_turn():
+    c = PerceptionCoalescer()
+    c.put('flood', ['x'], 0)
+    c.take(0)
+    c.put('new1', ['a'], 1)
+    c.put('new2', ['b'], 1)
+    order = []
+    for i in range(4):
+        c.put('flood', ['x(%d)' % i], 2 + i)  # always waiting again
+        order.append(c.take(0)[0])
+    assert order == ['flood', 'new1', 'flood', 'new2']  # it was new last time
+
+
+def test_a_source_name_too_long_is_dropped_and_counted():
+    c = PerceptionCoalescer(max_source_length=10)
+    assert c.put('x' * 11, ['a'], 0) == DROPPED
+    assert c.put('x' * 10, ['a'], 0) == ADDED
+    assert c.summary() == '1 dropped: source name longer than 10 characters'
 
 
 def test_a_flood_of_new_sources_is_bounded_and_the_waiting_ones_stay():
@@ -132,10 +168,12 @@ def test_the_summary_counts_what_was_overtaken_and_dropped_once():
 
 def test_the_summary_names_a_few_sources_abbreviated():
     c = PerceptionCoalescer(max_sources=1)
-    c.put('x' * 1000, [], 0)
+    c.put('x' * 200, [], 0)
+    c.put('x' * 200, [], 1)
     for i in range(50):
         c.put('s%d' % i, [], 0)
     line = c.summary()
+    assert "(source '%s…')" % ('x' * 60) in line
     assert "'s0', 's1', 's2', 's3', 's4', …" in line
     assert len(line) < 300
 

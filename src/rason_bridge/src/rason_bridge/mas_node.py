@@ -168,7 +168,9 @@ class RasonMasNode(object):
     def start(self):
         """Subscribe to the jason/* topics and start the agents' reasoning."""
         self._outbox.refresh_listed()
-        self._perceptions = PerceptionCoalescer(max_sources=int(self._bridge.limits().maxSources()))
+        self._perceptions = PerceptionCoalescer(
+            max_sources=int(self._bridge.limits().maxSources()),
+            max_source_length=int(self._jpype.JClass('rason.bridge.InputLimits').MAX_SOURCE_LENGTH))
         self._perceive_thread = threading.Thread(target=self._perceive_loop, name='rason_perceive', daemon=True)
         self._perceive_thread.start()
         self._events_sub = events_sub = rospy.Subscriber('jason/event', Event, self._on_event,

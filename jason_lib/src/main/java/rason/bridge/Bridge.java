@@ -211,6 +211,11 @@ public final class Bridge implements Fleet.Listener {
     public int perceive(String source, String[] texts, long nowNanos) {
         InputLimits limits = InputLimits.current();
         String shownSource = InputLimits.abbreviate(source, 100);
+        if (source.length() > InputLimits.MAX_SOURCE_LENGTH) {
+            limited.warn(DROPPED_PERCEPTION, "dropped perception message from source '" + shownSource
+                    + "': source name longer than " + InputLimits.MAX_SOURCE_LENGTH + " characters", System.nanoTime());
+            return 0;
+        }
         if (texts.length > limits.maxLiterals()) {
             limited.warn(DROPPED_PERCEPTION, "dropped perception message from source '" + shownSource + "': "
                     + texts.length + " literals, more than " + limits.maxLiterals() + " (the source's percepts are unchanged)",

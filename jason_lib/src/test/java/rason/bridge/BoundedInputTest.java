@@ -98,6 +98,9 @@ class BoundedInputTest {
         RosAgArch arch = agents.start(dir, "bob", "+go <- +went.\n");
         logger.addHandler(handler);
         assertEquals(1, bridge.perceive("known", new String[] { "early(1)" }, 100 * RunningAgents.SECOND));
+        assertEquals(0, bridge.perceive("s".repeat(InputLimits.MAX_SOURCE_LENGTH + 1), new String[] { "x(1)" },
+                100 * RunningAgents.SECOND));
+        assertTrue(linesContaining("source name longer than 256 characters") == 1, lines.toString());
         int max = InputLimits.current().maxSources();
         for (int i = 0; i < 3 * max; i++)
             bridge.perceive("flood_" + i, new String[] { "s(" + i + ")" }, 100 * RunningAgents.SECOND);
