@@ -230,7 +230,7 @@ def _hostile(worst_ms=40.0, answered=5, newest=12.0, before=100.0, after=115.0):
                                   {'deep': row, 'huge_agent_names': row, 'reserved': row}]},
             'flood': {'seconds': 20.0, 'rate_hz': 1000.0, 'literals': 50, 'mark_period_s': 1.0, 'after_s': 10.0,
                       'newest_ms': newest, 'marks_ms': {'n': 20, 'p50': 8.0, 'max': 60.0},
-                      'messages_heard_by_harness': 19000, 'cpu_s': 15.0, 'flood_wall_s': 21.0,
+                      'messages_published': 19000, 'cpu_s': 15.0, 'flood_wall_s': 21.0,
                       'rss_mb_before': before, 'rss_mb_peak': 400.0, 'rss_mb_after': after}}
 
 

@@ -16,7 +16,7 @@ def test_defaults_are_the_java_defaults():
     fresh = InputLimits()
     for getter, _ in INPUT_LIMIT_PARAMS.values():
         assert getattr(limits, getter)() == getattr(fresh, getter)()
-    assert limits.maxSources() == 1000
+    assert limits.maxSources() == 100
 
 
 def test_each_parameter_sets_its_limit():

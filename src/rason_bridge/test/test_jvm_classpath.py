@@ -27,7 +27,7 @@ def test_without_extra_nothing_is_added(monkeypatch):
 
 def test_jvm_options_keep_signals_for_rospy_and_take_extra_ones_last(monkeypatch):
     monkeypatch.setenv('RASON_JVM_OPTIONS', ' -Xmx512m  -XX:G1PeriodicGCInterval=0 ')
-    assert jvm_options()[0] == '-Xrs'
+    assert jvm_options()[0] == '-Xrs' and '-XX:+ExplicitGCInvokesConcurrent' in jvm_options()
     assert jvm_options()[-2:] == ['-Xmx512m', '-XX:G1PeriodicGCInterval=0']
     monkeypatch.delenv('RASON_JVM_OPTIONS')
     assert jvm_options() == list(JVM_OPTIONS)

@@ -5,7 +5,7 @@ import time
 
 import pytest
 
-from rason_bridge.coalesce import ADDED, DROPPED, REPLACED, PerceptionCoalescer
+from rason_bridge.coalesce import ADDED, DROPPED, REPLACED, FloodEnd, PerceptionCoalescer
 
 
 def test_the_newest_message_of_a_source_wins():
@@ -38,7 +38,7 @@ def test_a_source_taken_waits_again_behind_the_others_of_its_kind():
 
 
 def test_known_and_new_sources_take_turns():
-    c = PerceptionCoalescer()
+    c = PerceptionCoalescer(max_sources=1000)
     for s in ('cam', 'odom'):
         c.put(s, ['x'], 0)
         c.take(0)
@@ -182,3 +182,24 @@ def test_the_summary_names_a_few_sources_abbreviated():
 def test_the_bound_must_be_positive(bad):
     with pytest.raises(ValueError, match='max_sources'):
         PerceptionCoalescer(max_sources=bad)
+
+
+def test_overtaken_messages_are_counted_for_good():
+    c = PerceptionCoalescer()
+    for i in range(3):
+        c.put('a', [], i)
+    c.summary()
+    assert c.overtaken() == 2
+
+
+def test_a_flood_ends_once_after_a_quiet_second():
+    end = FloodEnd(quiet=1.0)
+    assert not end.ended(0, 0.0), 'nothing overtaken: no flood'
+    assert not end.ended(0, 100.0)
+    assert not end.ended(50, 100.5)
+    assert not end.ended(900, 101.0)  # still overtaking
+    assert not end.ended(900, 101.9)
+    assert end.ended(900, 102.0)
+    assert not end.ended(900, 110.0), 'once per flood'
+    assert not end.ended(901, 111.0)
+    assert end.ended(901, 112.5)

@@ -31,7 +31,18 @@ class Harness(object):
         self._events = rospy.Publisher('jason/event', Event, queue_size=1000, tcp_nodelay=True)
         self._perceptions = rospy.Publisher('jason/perception', Perception, queue_size=1000, tcp_nodelay=True)
         rospy.Subscriber('jason/action', Action, self._on_action, queue_size=None, tcp_nodelay=True)
-        rospy.Subscriber('jason/perception', Perception, self._on_perception, queue_size=1000, tcp_nodelay=True)
+        self._hearing = None
+        self.hear(True)
+
+    def hear(self, on):
+        """Count the messages on jason/perception (:meth:`heard`), or stop: the hostile part
+        does not want this process to read 1 MB literals or a flood while it times the agent."""
+        if on and self._hearing is None:
+            self._hearing = rospy.Subscriber('jason/perception', Perception, self._on_perception, queue_size=1000,
+                                             tcp_nodelay=True)
+        elif not on and self._hearing is not None:
+            self._hearing.unregister()
+            self._hearing = None
 
     def next_run(self):
         return next(self._runs)

@@ -180,7 +180,7 @@ def hostile_text(hostile):
         out += ['After a warm-up (5 s of 50 literals × 50 Hz), each input of `rason_tools.hostile` (seed %d), then at once %d trigger percepts 20 ms apart on '
                 'the same topic behind it: perception → the agent\'s action (ms), and the node\'s RSS. '
                 'The node runs with `perception_ttl` %g s, so that the trigger sources, heard before, are still '
-                'known after the 3000 new source names (a new source is refused while `max_sources` others were '
+                'known after the 300 new source names (a new source is refused while `max_sources` others were '
                 'heard within the TTL).' % (inputs['seed'], inputs['triggers_per_input'], inputs['perception_ttl_s']),
                 'Each input is sent in two rounds; in the first the JIT also compiles for message sizes the node has '
                 'not met before.', '',
@@ -207,7 +207,7 @@ def hostile_text(hostile):
                 'and the last message a final mark. Publish → the agent\'s action for it: newest (final) %s ms; '
                 'marks during the flood %s. Node CPU %.1f s over %.1f s. RSS %.0f MB before, peak %.0f MB, '
                 '%.0f MB %g s after the flood.'
-                % (flood['seconds'], flood['literals'], flood['rate_hz'], flood['messages_heard_by_harness'],
+                % (flood['seconds'], flood['literals'], flood['rate_hz'], flood.get('messages_published'),
                    flood['mark_period_s'], '%.1f' % flood['newest_ms'] if flood['newest_ms'] is not None else 'never',
                    'p50 %.1f ms, max %.1f ms (%d marks)' % (m['p50'], m['max'], m['n']) if m['n'] else 'none seen',
                    flood['cpu_s'], flood['flood_wall_s'], flood['rss_mb_before'], flood['rss_mb_peak'] or 0,

@@ -7,8 +7,8 @@ message, paced on the wall clock.
 As the flood of the hostile part (``mark_period`` > 0), the last of the ``count``
 literals is the current :func:`rason_bench.protocol.flood_mark`: a new mark every
 ``mark_period`` s, stamped when first published, and one more in the very last
-message, after ``duration`` s; then the node publishes nothing more and waits to be
-stopped (the last message still goes out).
+message, after ``duration`` s; then the node publishes nothing more, sets ``~published`` to the number of
+messages it published, and waits to be stopped (the last message still goes out).
 
 ~params: ``count`` (int, 10), ``rate`` (float Hz, 50), ``source`` (str, ``<node name>_burst``),
 ``duration`` (float s, 0: until stopped), ``mark_period`` (float s, 0: no marks), ``run``
@@ -75,5 +75,6 @@ def main():
         return
     if marks:  # the newest perception: how long it takes to reach the agent is the measure
         pub.publish(Perception(source=source, perception=burst(count - 1, seq) + [marks.final(time.monotonic())]))
+    rospy.set_param('~published', seq)
     rospy.loginfo('published %d messages in %.1f s', seq, time.monotonic() - start)
     rospy.spin()

@@ -39,7 +39,7 @@ class PerceptionCoalescer(object):
     :param max_source_length: characters of a source name
     """
 
-    def __init__(self, max_sources=1000, max_source_length=256):
+    def __init__(self, max_sources=100, max_source_length=256):
         if max_sources < 1:
             raise ValueError('max_sources must be 1 or more, not %r' % (max_sources,))
         self._max_sources = max_sources
@@ -53,6 +53,7 @@ class PerceptionCoalescer(object):
         self._new_turn = False
         self._closed = False
         self._replaced = self._dropped = self._too_long = 0
+        self._overtaken_ever = 0
         self._replaced_sources = collections.OrderedDict()  # a few names for the summary
         self._dropped_sources = collections.OrderedDict()
 
@@ -80,6 +81,7 @@ class PerceptionCoalescer(object):
             if queue is not None:
                 queue[source] = (literals, stamp)
                 self._replaced += 1
+                self._overtaken_ever += 1
                 _note(self._replaced_sources, source)
                 return REPLACED
             if self._count() >= self._max_sources:
@@ -114,6 +116,11 @@ class PerceptionCoalescer(object):
             self._closed = True
             self._cond.notify_all()
             self._room.notify_all()
+
+    def overtaken(self):
+        """How many messages were overtaken by a newer one of their source so far (ever)."""
+        with self._lock:
+            return self._overtaken_ever
 
     def waiting(self):
         """How many sources have a message waiting."""
@@ -154,3 +161,28 @@ def _names(sources):
 
 def _short(text, limit=60):
     return text if len(text) <= limit else text[:limit] + '…'
+
+
+class FloodEnd(object):
+    """Tells when a flood is over: messages were overtaken (the node fell behind), and then
+    none for ``quiet`` s. Fed the coalescer's :meth:`~PerceptionCoalescer.overtaken` count
+    and the time; no threads of its own.
+
+    :param quiet: seconds without an overtaken message that end a flood
+    """
+
+    def __init__(self, quiet=1.0):
+        self.quiet = quiet
+        self._count = 0
+        self._last = None  # when an overtaken message was last seen, during a flood
+
+    def ended(self, overtaken, now):
+        """True once per flood, ``quiet`` s after its last overtaken message."""
+        if overtaken != self._count:
+            self._count = overtaken
+            self._last = now
+            return False
+        if self._last is not None and now - self._last >= self.quiet:
+            self._last = None
+            return True
+        return False

@@ -10,10 +10,13 @@ JPYPE_SUPPORT_JAR = '/usr/share/java/org.jpype.jar'
 #: -Xrs: SIGINT/SIGTERM are rospy's. The G1 options give memory back after a burst: a flood
 #: of perceptions allocates fast but keeps little alive (a few MB), and G1 grew its young
 #: generation to most of a GB and kept it. Now it may spend more time collecting (GCTimeRatio
-#: 4: up to 20 % instead of 8 %) before it grows the heap, shrinks it to at most 30 % free
-#: after a collection, and collects when 2 s passed without one, so an idle node shrinks back.
+#: 4: up to 20 % instead of 8 %) before it grows the heap, and shrinks it to at most 30 % free
+#: after a concurrent collection: one the node asks for when a flood ends (System.gc, made
+#: concurrent), or one G1 makes after 30 s without any (an idle node; every 2 s cost a busy
+#: one 4 % of a core).
 JVM_OPTIONS = ('-Xrs', '-Djava.awt.headless=true', '-XX:+UseG1GC', '-XX:GCTimeRatio=4',
-               '-XX:MinHeapFreeRatio=10', '-XX:MaxHeapFreeRatio=30', '-XX:G1PeriodicGCInterval=2000')
+               '-XX:MinHeapFreeRatio=10', '-XX:MaxHeapFreeRatio=30', '-XX:+ExplicitGCInvokesConcurrent',
+               '-XX:G1PeriodicGCInterval=30000')
 
 _WORKSPACE_ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), '..', '..', '..', '..'))
 

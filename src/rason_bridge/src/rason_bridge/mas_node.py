@@ -18,7 +18,7 @@ import rosgraph
 import rospy
 from rason_msgs.msg import Action, AgentMessage, Event, Perception, Presence
 
-from rason_bridge.coalesce import PerceptionCoalescer
+from rason_bridge.coalesce import FloodEnd, PerceptionCoalescer
 from rason_bridge.jvm import JvmError, start_jvm
 from rason_bridge.limits import apply_input_limits, seconds_to_nanos
 from rason_bridge.outbox import DEFERRED, NO_DECOMPOSER, ActionOutbox
@@ -230,7 +230,10 @@ class RasonMasNode(object):
     def _perceive_loop(self):
         # The one thread that hands perceptions to Java (parsed there, then to every agent).
         next_summary = time.monotonic() + _COALESCED_LOG_PERIOD
+        flood = FloodEnd()
         while not self._stopping and not rospy.is_shutdown():
+            if flood.ended(self._perceptions.overtaken(), time.monotonic()):
+                self._bridge.releaseMemory()  # what the flood made the JVM grow goes back now
             item = self._perceptions.take(_PERCEIVE_WAIT)
             if item is not None:
                 source, literals, stamp = item
@@ -469,7 +472,7 @@ def main(argv=None):
     ``ask_timeout`` (float s, 60; 0 disables), ``perception_manager`` (str, per_source),
     ``decomposer_grace`` (float s, 0.5), and the input limits ``max_literal_length`` (int, 4096),
     ``max_content_length`` (int, 65536), ``max_nesting`` (int, 32), ``max_term_depth`` (int, 512),
-    ``max_literals`` (int, 1000), ``max_sources`` (int, 1000) (see :mod:`rason_bridge.limits`).
+    ``max_literals`` (int, 1000), ``max_sources`` (int, 100) (see :mod:`rason_bridge.limits`).
     Publishes the hosted agents' names on the ``~agents`` parameter.
     """
     args = rospy.myargv(argv if argv is not None else sys.argv)

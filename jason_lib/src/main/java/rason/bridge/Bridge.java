@@ -237,6 +237,14 @@ public final class Bridge implements Fleet.Listener {
         return shared.size();
     }
 
+    /**
+     * A burst of input is over (the node saw a perception flood end): a garbage collection now
+     * lets the JVM shrink the heap the burst grew (concurrent with the node's JVM options).
+     */
+    public void releaseMemory() {
+        System.gc();
+    }
+
     /** The perception sources remembered now (bounded by {@link InputLimits#maxSources()}). */
     public int perceptionSources() {
         return sources.size();

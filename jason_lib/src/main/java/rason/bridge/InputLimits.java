@@ -26,7 +26,7 @@ public final class InputLimits {
     public static final int DEFAULT_MAX_TERM_DEPTH = 512;
     public static final int DEFAULT_MAX_LITERALS = 1000;
     public static final int DEFAULT_MAX_CONTENT_LENGTH = 64 * 1024;
-    public static final int DEFAULT_MAX_SOURCES = 1000;
+    public static final int DEFAULT_MAX_SOURCES = 100;
     /** Characters of a perception source's name: every per-source table holds the names. */
     public static final int MAX_SOURCE_LENGTH = 256;
 
