@@ -5,7 +5,7 @@ from rason_bench import main
 
 
 def test_every_part_runs_by_default_and_preemption_can_run_alone():
-    assert set(main.PARTS) == {'cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'behaviour'}
+    assert set(main.PARTS) == {'cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'hostile', 'behaviour'}
     assert main.PARTS[-1] == 'behaviour'  # it starts the simulator and sets /use_sim_time
     assert main._parse(['--only', 'preemption']).only == ['preemption']
     assert main._parse([]).only is None
@@ -20,3 +20,8 @@ def test_take_backs_option():
 
 def test_control_rate_is_the_goals_50_hz():
     assert main.CONTROL_RATE_HZ == 50.0
+
+
+def test_hostile_can_run_alone_and_its_flood_is_the_issues():
+    assert main._parse(['--only', 'hostile']).only == ['hostile']
+    assert (main.FLOOD_SECONDS, main.FLOOD_RATE_HZ, main.FLOOD_LITERALS) == (20.0, 1000.0, 50)

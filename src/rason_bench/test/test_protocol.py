@@ -64,3 +64,20 @@ def test_control_percepts_name_agent_run_and_size():
     assert protocol.tick(8, 2) == 'tick(8,2)'
     assert protocol.go_move('preempt', 7, 0) == 'go_move(preempt,7,0)'
     assert protocol.take_back('preempt', 7, 0) == 'take_back(preempt,7,0)'
+
+
+def test_flood_marks_are_timed_on_the_stamps_clock():
+    assert protocol.flood_mark(3, 7, 1234.5) == 'flood_mark(3,7,1234.500)'
+    marked = protocol.parse_report('marked', ['3', '7', '1234.5'])
+    assert marked == protocol.Marked(3, 7, 1234.5)
+    assert protocol.mark_seen(marked, 1240.0) == protocol.MarkSeen(3, 7, 5.5)
+    assert protocol.FINAL_MARK == 0  # the marks during a flood count from 1
+
+
+def test_a_flood_has_a_new_mark_each_period_and_a_final_one():
+    from rason_bench.synth import Marks
+    marks = Marks(run=4, period=1.0)
+    assert marks.current(10.0) == 'flood_mark(4,1,10000.000)'
+    assert marks.current(10.9) == 'flood_mark(4,1,10000.000)'  # the same mark for a period
+    assert marks.current(11.0) == 'flood_mark(4,2,11000.000)'
+    assert marks.final(11.5) == 'flood_mark(4,0,11500.000)'

@@ -218,3 +218,45 @@ def test_markdown_preemption_section_states_the_control_rate_and_the_verdict():
     assert '## Preemption latency' in text
     assert '`~rate` 50 Hz' in text
     assert '| 70.00 ms (50 take-backs) | **not met** |' in text
+
+
+def _hostile(worst_ms=40.0, answered=5, newest=12.0, before=100.0, after=115.0):
+    row = {'reaction_ms': {'n': 5, 'p50': 3.0, 'p90': 5.0, 'p99': 6.0, 'max': 6.0, 'min': 2.0, 'mean': 3.0},
+           'send_s': 0.1, 'rss_mb_before': 100.0, 'rss_mb_after': 101.0}
+    slow = dict(row, reaction_ms={'n': answered, 'p50': 9.0, 'p90': worst_ms, 'p99': worst_ms, 'max': worst_ms,
+                                  'min': 2.0, 'mean': 9.0} if answered else {'n': 0})
+    return {'inputs': {'seed': 13, 'triggers_per_input': 5, 'perception_ttl_s': 10.0,
+                       'rounds': [{'deep': row, 'huge_agent_names': slow, 'reserved': row},
+                                  {'deep': row, 'huge_agent_names': row, 'reserved': row}]},
+            'flood': {'seconds': 20.0, 'rate_hz': 1000.0, 'literals': 50, 'mark_period_s': 1.0, 'after_s': 10.0,
+                      'newest_ms': newest, 'marks_ms': {'n': 20, 'p50': 8.0, 'max': 60.0},
+                      'messages_published': 19000, 'cpu_s': 15.0, 'flood_wall_s': 21.0,
+                      'rss_mb_before': before, 'rss_mb_peak': 400.0, 'rss_mb_after': after}}
+
+
+def test_hostile_goals_met():
+    results = dict(_results(), hostile=_hostile())
+    verdicts = [_goal(results, start) for start in ('hostile input', 'after a 20 s', '10 s after')]
+    assert [met for _, met in verdicts] == [True, True, True]
+    assert verdicts[0][0] == 'slowest 40.0 ms (after huge_agent_names, round 1); last round slowest 6.0 ms (deep)'
+    assert verdicts[2][0] == '115 MB, 1.15 x before (100 MB; peak 400 MB)'
+
+
+@pytest.mark.parametrize('kwargs, which', [(dict(worst_ms=150.0), 0), (dict(answered=4), 0), (dict(answered=0), 0),
+                                           (dict(newest=60.0), 1), (dict(newest=None), 1), (dict(after=121.0), 2)])
+def test_hostile_goals_missed(kwargs, which):
+    results = dict(_results(), hostile=_hostile(**kwargs))
+    verdicts = [_goal(results, start) for start in ('hostile input', 'after a 20 s', '10 s after')]
+    assert [met for _, met in verdicts] == [i != which for i in range(3)]
+
+
+def test_an_unanswered_trigger_is_the_worst_input():
+    r, name, ms, complete = report.worst_input(_hostile(worst_ms=1.0, answered=4)['inputs'])
+    assert (r, name, complete) == (1, 'huge_agent_names', False)
+
+
+def test_the_report_has_a_hostile_section():
+    text = report.markdown(dict(_results(), hostile=_hostile()))
+    assert '## Hostile input' in text
+    assert '| huge_agent_names | 0.10 | 5 of 5, 5 of 5 | 40.0 | 6.0 | 100 → 101 |' in text
+    assert 'newest (final) 12.0 ms' in text

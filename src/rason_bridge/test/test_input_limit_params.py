@@ -1,9 +1,10 @@
-"""rason_mas's ~max_* parameters reach Java's InputLimits, and bad values are refused by name."""
+"""rason_mas's ~max_* parameters reach Java's InputLimits, durations become Java's nanoseconds, and bad
+values are refused by name."""
 import jpype
 import pytest
 
 from rason_bridge.jvm import start_jvm
-from rason_bridge.limits import INPUT_LIMIT_PARAMS, apply_input_limits
+from rason_bridge.limits import INPUT_LIMIT_PARAMS, apply_input_limits, seconds_to_nanos
 
 start_jvm()
 InputLimits = jpype.JClass('rason.bridge.InputLimits')
@@ -13,22 +14,35 @@ def test_defaults_are_the_java_defaults():
     limits = InputLimits()
     apply_input_limits(limits, lambda name, default: default)
     fresh = InputLimits()
-    assert (limits.maxLiteralLength(), limits.maxContentLength(), limits.maxNesting(), limits.maxTermDepth(),
-            limits.maxLiterals()) == (fresh.maxLiteralLength(), fresh.maxContentLength(), fresh.maxNesting(),
-                                      fresh.maxTermDepth(), fresh.maxLiterals())
+    for getter, _ in INPUT_LIMIT_PARAMS.values():
+        assert getattr(limits, getter)() == getattr(fresh, getter)()
+    assert limits.maxSources() == 100
 
 
 def test_each_parameter_sets_its_limit():
     limits = InputLimits()
     given = {'max_literal_length': 100, 'max_content_length': 200, 'max_nesting': 3, 'max_term_depth': 40,
-             'max_literals': 7}
+             'max_literals': 7, 'max_sources': 9}
     assert set(given) == set(INPUT_LIMIT_PARAMS)
     apply_input_limits(limits, lambda name, default: given[name])
     assert (limits.maxLiteralLength(), limits.maxContentLength(), limits.maxNesting(), limits.maxTermDepth(),
-            limits.maxLiterals()) == (100, 200, 3, 40, 7)
+            limits.maxLiterals(), limits.maxSources()) == (100, 200, 3, 40, 7, 9)
 
 
 @pytest.mark.parametrize('bad', [0, -5, 2.5, 'many', True, None])
 def test_a_bad_value_is_refused_naming_the_parameter(bad):
     with pytest.raises(ValueError, match='max_nesting'):
         apply_input_limits(InputLimits(), lambda name, default: bad if name == 'max_nesting' else default)
+
+
+@pytest.mark.parametrize('seconds, nanos', [(60.0, 60 * 10 ** 9), (0, 0), (0.5, 5 * 10 ** 8), (-1, -10 ** 9),
+                                            (1e9, 10 ** 18)])
+def test_durations_become_nanoseconds(seconds, nanos):
+    assert seconds_to_nanos('action_timeout', seconds) == nanos
+
+
+@pytest.mark.parametrize('bad', [float('inf'), float('-inf'), float('nan'), 1e300, 2 ** 80, '60', None, True])
+def test_a_duration_java_cannot_take_is_refused_naming_the_parameter(bad):
+    # int(inf) raised OverflowError, which the node did not catch
+    with pytest.raises(ValueError, match='perception_ttl'):
+        seconds_to_nanos('perception_ttl', bad)

@@ -1,7 +1,8 @@
-"""The JVM's class path (rason_bridge.jvm), without starting a JVM: plug-in jars are appended."""
+"""The JVM's class path and options (rason_bridge.jvm), without starting a JVM: plug-in jars and
+extra options are appended."""
 import os
 
-from rason_bridge.jvm import jason_lib_classpath
+from rason_bridge.jvm import JVM_OPTIONS, jason_lib_classpath, jvm_options
 
 
 def test_extra_classpath_is_appended_after_jason_lib(monkeypatch):
@@ -22,3 +23,11 @@ def test_without_extra_nothing_is_added(monkeypatch):
     monkeypatch.setenv('RASON_CLASSPATH', '/a.jar')
     monkeypatch.delenv('RASON_EXTRA_CLASSPATH', raising=False)
     assert jason_lib_classpath() == ['/a.jar']
+
+
+def test_jvm_options_keep_signals_for_rospy_and_take_extra_ones_last(monkeypatch):
+    monkeypatch.setenv('RASON_JVM_OPTIONS', ' -Xmx512m  -XX:G1PeriodicGCInterval=0 ')
+    assert jvm_options()[0] == '-Xrs' and '-XX:+ExplicitGCInvokesConcurrent' in jvm_options()
+    assert jvm_options()[-2:] == ['-Xmx512m', '-XX:G1PeriodicGCInterval=0']
+    monkeypatch.delenv('RASON_JVM_OPTIONS')
+    assert jvm_options() == list(JVM_OPTIONS)

@@ -34,13 +34,13 @@ def agents_file(name):
 class Mas(object):
     """One rason_mas process running a benchmark project, and its CPU and memory use."""
 
-    def __init__(self, procs, harness, mas2j, perception_manager='per_source'):
+    def __init__(self, procs, harness, mas2j, perception_manager='per_source', **params):
         self.procs = procs
         self.harness = harness
         if rospy.has_param('/rason_mas/agents'):  # left by the previous run's node
             rospy.delete_param('/rason_mas/agents')
         self.proc = procs.rosrun('rason_mas', 'rason_bridge', 'rason_mas', agents_file(mas2j),
-                                 perception_manager=perception_manager)
+                                 perception_manager=perception_manager, **params)
         self.ps = psutil.Process(self.proc.pid)
 
     def __enter__(self):

@@ -31,7 +31,18 @@ class Harness(object):
         self._events = rospy.Publisher('jason/event', Event, queue_size=1000, tcp_nodelay=True)
         self._perceptions = rospy.Publisher('jason/perception', Perception, queue_size=1000, tcp_nodelay=True)
         rospy.Subscriber('jason/action', Action, self._on_action, queue_size=None, tcp_nodelay=True)
-        rospy.Subscriber('jason/perception', Perception, self._on_perception, queue_size=1000, tcp_nodelay=True)
+        self._hearing = None
+        self.hear(True)
+
+    def hear(self, on):
+        """Count the messages on jason/perception (:meth:`heard`), or stop: the hostile part
+        does not want this process to read 1 MB literals or a flood while it times the agent."""
+        if on and self._hearing is None:
+            self._hearing = rospy.Subscriber('jason/perception', Perception, self._on_perception, queue_size=1000,
+                                             tcp_nodelay=True)
+        elif not on and self._hearing is not None:
+            self._hearing.unregister()
+            self._hearing = None
 
     def next_run(self):
         return next(self._runs)
@@ -57,6 +68,8 @@ class Harness(object):
                                    parameters=['OK', str(msg.action_id)]))
         if isinstance(report, protocol.Reacted):
             report = protocol.reaction(report, received_ms)
+        elif isinstance(report, protocol.Marked):
+            report = protocol.mark_seen(report, received_ms)
         if report is not None:
             with self._cond:
                 self._reports.append(report)
@@ -146,6 +159,14 @@ class Harness(object):
 
     def control(self, literal):
         self._perceptions.publish(Perception(source=protocol.CONTROL_SOURCE, perception=[literal]))
+
+    def publish_perception(self, msg):
+        """Any rason_msgs/Perception, on the topic (and so in the order) of the harness's own."""
+        self._perceptions.publish(msg)
+
+    def publish_event(self, msg):
+        """Any rason_msgs/Event, as a decomposer would publish it."""
+        self._events.publish(msg)
 
     def cycle(self, agent, iterations, timeout):
         """One run of the Listing 5.4 loop by ``agent``: a :class:`protocol.Cycle`."""

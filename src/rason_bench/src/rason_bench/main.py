@@ -3,7 +3,7 @@ their own and writes ``report.md``, ``results.json`` and PNG plots.
 
 Options: ``--seconds`` (length of one measured run, default 1), ``--quick`` (a subset of
 cells, fewer samples, for a smoke run), ``--only`` (cycle, latency, cpu, reaction, scale,
-preemption, behaviour; repeatable), ``--take-backs`` (rounds of the preemption part), ``--out``
+preemption, hostile, behaviour; repeatable), ``--take-backs`` (rounds of the preemption part), ``--out``
 (directory).
 """
 import argparse
@@ -18,10 +18,13 @@ import time
 from rason_bench import plots, report, thesis
 
 #: The parts of a run, in the order they run (behaviour last: it starts the simulator).
-PARTS = ('cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'behaviour')
+PARTS = ('cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'hostile', 'behaviour')
 TAKE_BACKS, TAKE_BACKS_QUICK = 200, 50
 #: motion_decomp's ~rate in the preemption part: the 50 Hz control period of the goal.
 CONTROL_RATE_HZ = 50.0
+#: The hostile part's flood (issue 13's): seconds (--quick: FLOOD_SECONDS_QUICK), Hz,
+#: literals per message, and when after it the node's RSS is read (s).
+FLOOD_SECONDS, FLOOD_SECONDS_QUICK, FLOOD_RATE_HZ, FLOOD_LITERALS, FLOOD_AFTER_S = 20.0, 5.0, 1000.0, 50, 10.0
 
 
 def _parse(argv):
@@ -69,7 +72,10 @@ def main(argv=None):
                           'cpu_window_s': 5 * args.seconds, 'triggers': stamps,
                           'busy_intentions': report.BUSY_INTENTIONS, 'wakeups': wakeups, 'wakeup_gap_s': 2.0,
                           'sim_window_s': sim_window, 'rate_limit_seconds': 3.0, 'rate_limit_sent_hz': 50.0,
-                          'take_backs': take_backs, 'control_rate_hz': CONTROL_RATE_HZ, 'parts': parts}}
+                          'take_backs': take_backs, 'control_rate_hz': CONTROL_RATE_HZ,
+                          'flood_seconds': FLOOD_SECONDS_QUICK if args.quick else FLOOD_SECONDS,
+                          'flood_rate_hz': FLOOD_RATE_HZ, 'flood_literals': FLOOD_LITERALS,
+                          'flood_after_s': FLOOD_AFTER_S, 'parts': parts}}
 
     def log(line):
         print(line, flush=True)
@@ -84,7 +90,7 @@ def main(argv=None):
     failed = []
     try:
         import rospy
-        from rason_bench import behaviour, experiments
+        from rason_bench import behaviour, experiments, hostile
         from rason_bench.harness import Harness
         rospy.init_node('rason_bench', disable_signals=True)
         harness = Harness()
@@ -104,6 +110,12 @@ def main(argv=None):
             'scale': [('scale', 'scale', scale)],
             'preemption': [('preemption', 'preemption (motion_decomp at %g Hz)' % CONTROL_RATE_HZ,
                             lambda: experiments.preemption(procs, harness, p['take_backs'], CONTROL_RATE_HZ, log))],
+            'hostile': [
+                ('hostile.inputs', 'hostile input: the agent answers after each', lambda: hostile.reaction_after_inputs(
+                    procs, harness, log)),
+                ('hostile.flood', 'hostile input: a perception flood', lambda: hostile.flood(
+                    procs, harness, p['flood_seconds'], p['flood_rate_hz'], p['flood_literals'], p['flood_after_s'],
+                    log))],
             'behaviour': [
                 ('behaviour.wakeup', 'behaviour: idle wake-up', lambda: behaviour.wakeup(
                     procs, harness, wakeups, p['wakeup_gap_s'], log)),

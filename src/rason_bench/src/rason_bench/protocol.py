@@ -29,11 +29,17 @@ Spun = namedtuple('Spun', 'run index turns')
 #: ``ticked(Run, Agent, Seq, Ms)``: the update tick(Run, Seq) reached Agent's plan at Ms
 #: (the agent's rason.time_ms).
 Ticked = namedtuple('Ticked', 'run agent seq ms')
+#: ``marked(Run, K, Stamp)``: the agent's action for the flood mark flood_mark(Run, K, Stamp)
+#: (agents/hostile.asl); the harness times it on arrival (:func:`mark_seen`).
+Marked = namedtuple('Marked', 'run mark stamp_ms')
+#: Publish of a flood mark -> the agent's action for it arriving, in ms (made by the harness).
+MarkSeen = namedtuple('MarkSeen', 'run mark ms')
 
 _REPORTS = {'cycle': (Cycle, (int, int, float)), 'rtt': (RoundTrip, (int, int, float)),
             'seen': (Seen, (int, int, float)), 'react': (Reacted, (int, int, float)),
             'spinning': (Spinning, (int, int)), 'spun': (Spun, (int, int, int)),
-            'ticked': (Ticked, (int, str, int, float)), 'took_back': (TookBack, (int, int, float))}
+            'ticked': (Ticked, (int, str, int, float)), 'took_back': (TookBack, (int, int, float)),
+            'marked': (Marked, (int, int, float))}
 
 #: Source of the harness's control percepts.
 CONTROL_SOURCE = 'bench_control'
@@ -76,6 +82,11 @@ def _int(text):
 def reaction(reacted, received_ms):
     """The Reaction of a Reacted that arrived at ``received_ms`` (same clock as its stamp)."""
     return Reaction(reacted.run, reacted.seq, received_ms - reacted.stamp_ms)
+
+
+def mark_seen(marked, received_ms):
+    """The MarkSeen of a Marked that arrived at ``received_ms`` (same clock as its stamp)."""
+    return MarkSeen(marked.run, marked.mark, received_ms - marked.stamp_ms)
 
 
 def go_cycle(agent, run, iterations):
@@ -127,6 +138,16 @@ def take_back(agent, run, index):
 def stamp(run, seq, now_ms):
     """Latency percept: published at ``now_ms`` on the monotonic clock."""
     return 'stamp(%d,%d,%.3f)' % (run, seq, now_ms)
+
+
+#: The mark of a flood's very last message (the marks before it count from 1).
+FINAL_MARK = 0
+
+
+def flood_mark(run, mark, stamp_ms):
+    """Flood percept: mark ``mark`` of run ``run``, first published at ``stamp_ms``; every
+    message of the flood carries the current mark, so coalescing cannot hide a new one."""
+    return 'flood_mark(%d,%d,%.3f)' % (run, mark, stamp_ms)
 
 
 def burst(count, seq):

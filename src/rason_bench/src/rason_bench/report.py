@@ -24,6 +24,12 @@ SIM_RTF_GOAL = 0.95
 SIM_RATE_GOALS_HZ = (('faulty odom', 48.0), ('helper odom', 48.0), ('camera', 9.5), ('vision', 9.0))
 #: Take-back -> zero twist on cmd_vel: one 50 Hz control period (20 ms) plus transport.
 PREEMPT_P99_GOAL_MS = 60.0
+#: Issue 13: after every hostile input the agent answers (perception -> action) within this;
+#: after a 20 s 1000 Hz x 50-literal flood the newest perception reaches the agent within
+#: FLOOD_NEWEST_GOAL_MS and the node's RSS comes back within FLOOD_RSS_GOAL of its value before.
+HOSTILE_REACTION_GOAL_MS = 100.0
+FLOOD_NEWEST_GOAL_MS = 50.0
+FLOOD_RSS_GOAL = 1.2
 
 
 def baseline_ms(mode_result):
@@ -78,6 +84,7 @@ def goals(results):
     out += _wakeup_goals(behaviour.get('wakeup'))
     out += _rate_limit_goals(behaviour.get('rate_limit'))
     out += _sim_goals(behaviour.get('sim'))
+    out += _hostile_goals(results.get('hostile', {}))
     stop = results.get('preemption', {}).get('stop_ms')
     if stop:
         goal = ('preemption: take-back -> zero twist p99 <= %g ms (one 50 Hz control period plus transport)'
@@ -117,6 +124,95 @@ def _reaction_goals(reaction):
              s['p50'] <= REACTION_P50_GOAL_MS and s['n'] == load['triggers_sent']),
             ('perception -> action p99 %s <= %g ms' % (where, REACTION_P99_GOAL_MS), '%.2f ms%s' % (s['p99'], seen),
              s['p99'] <= REACTION_P99_GOAL_MS and s['n'] == load['triggers_sent'])]
+
+
+def worst_input(inputs_result):
+    """(round from 1, input name, its slowest reaction ms or None, all triggers answered) of
+    the input whose triggers fared worst in any round: one unanswered is worse than any time."""
+    worst = None
+    for r, done in enumerate(inputs_result['rounds']):
+        for name, row in done.items():
+            s = row['reaction_ms']
+            complete = s['n'] == inputs_result['triggers_per_input']
+            key = (not complete, s.get('max', float('inf')))
+            if worst is None or key > worst[0]:
+                worst = (key, r + 1, name, s.get('max'), complete)
+    return worst[1:] if worst else (None, None, None, False)
+
+
+def _hostile_goals(hostile):
+    out = []
+    inputs = hostile.get('inputs')
+    if inputs and inputs['rounds'] and inputs['rounds'][0]:
+        r, name, ms, complete = worst_input(inputs)
+        goal = ('hostile input: the agent answers (perception -> action) after each of %d inputs, %d rounds, <= %g ms'
+                % (len(inputs['rounds'][0]), len(inputs['rounds']), HOSTILE_REACTION_GOAL_MS))
+        if not complete:
+            out.append((goal, 'no answer to a trigger after %s (round %d)' % (name, r), False))
+        else:
+            text = 'slowest %.1f ms (after %s, round %d)' % (ms, name, r)
+            if len(inputs['rounds']) > 1:
+                last = dict(inputs, rounds=inputs['rounds'][-1:])
+                _, name2, ms2, complete2 = worst_input(last)
+                text += '; last round %s' % ('slowest %.1f ms (%s)' % (ms2, name2) if complete2 else 'unanswered')
+            out.append((goal, text, ms <= HOSTILE_REACTION_GOAL_MS))
+    flood = hostile.get('flood')
+    if flood:
+        where = '%g s %g Hz x %d-literal flood' % (flood['seconds'], flood['rate_hz'], flood['literals'])
+        newest = flood['newest_ms']
+        out.append(('after a %s the newest perception reaches the agent <= %g ms' % (where, FLOOD_NEWEST_GOAL_MS),
+                    '%.1f ms' % newest if newest is not None else 'never', newest is not None
+                    and newest <= FLOOD_NEWEST_GOAL_MS))
+        ratio = stats.ratio(flood['rss_mb_after'], flood['rss_mb_before'])
+        out.append(('%g s after a %s the node\'s RSS is within %d %% of before' % (
+                        flood['after_s'], where, round(100 * (FLOOD_RSS_GOAL - 1))),
+                    '%.0f MB, %.2f x before (%.0f MB; peak %.0f MB)' % (
+                        flood['rss_mb_after'], ratio, flood['rss_mb_before'], flood['rss_mb_peak'] or 0),
+                    ratio is not None and ratio <= FLOOD_RSS_GOAL))
+    return out
+
+
+def hostile_text(hostile):
+    """Markdown: the reaction after each hostile input, and the flood's numbers."""
+    out = []
+    inputs = hostile.get('inputs')
+    if inputs:
+        out += ['After a warm-up (5 s of 50 literals × 50 Hz), each input of `rason_tools.hostile` (seed %d), then at once %d trigger percepts 20 ms apart on '
+                'the same topic behind it: perception → the agent\'s action (ms), and the node\'s RSS. '
+                'The node runs with `perception_ttl` %g s, so that the trigger sources, heard before, are still '
+                'known after the 300 new source names (a new source is refused while `max_sources` others were '
+                'heard within the TTL).' % (inputs['seed'], inputs['triggers_per_input'], inputs['perception_ttl_s']),
+                'Each input is sent in two rounds; in the first the JIT also compiles for message sizes the node has '
+                'not met before.', '',
+                _row(['input', 'sent in s', 'answered', 'max ms, round 1', 'max ms, round 2', 'RSS MB, round 1']),
+                _row(['---'] * 6)]
+        rounds = inputs['rounds']
+        for name, row in rounds[0].items():
+            cells = [name, '%.2f' % row['send_s'],
+                     ', '.join('%d of %d' % (rd[name]['reaction_ms']['n'], inputs['triggers_per_input'])
+                               for rd in rounds if name in rd)]
+            for rd in rounds[:2]:
+                s = rd.get(name, {}).get('reaction_ms', {'n': 0})
+                cells.append('%.1f' % s['max'] if s['n'] else '–')
+            cells += ['–'] * (5 - len(cells))
+            cells.append('%.0f → %.0f' % (row['rss_mb_before'], row['rss_mb_after']))
+            out.append(_row(cells))
+        out.append('')
+    flood = hostile.get('flood')
+    if flood:
+        m = flood['marks_ms']
+        out += ['Flood: `bench_synth` publishes %g s of %d literals at %g Hz from one source (%d messages heard by '
+                'the harness, a rospy node too) to a node warmed up like the inputs\' (RSS before is read after it); '
+                'every message carries the current mark, a new one each %g s, '
+                'and the last message a final mark. Publish → the agent\'s action for it: newest (final) %s ms; '
+                'marks during the flood %s. Node CPU %.1f s over %.1f s. RSS %.0f MB before, peak %.0f MB, '
+                '%.0f MB %g s after the flood.'
+                % (flood['seconds'], flood['literals'], flood['rate_hz'], flood.get('messages_published'),
+                   flood['mark_period_s'], '%.1f' % flood['newest_ms'] if flood['newest_ms'] is not None else 'never',
+                   'p50 %.1f ms, max %.1f ms (%d marks)' % (m['p50'], m['max'], m['n']) if m['n'] else 'none seen',
+                   flood['cpu_s'], flood['flood_wall_s'], flood['rss_mb_before'], flood['rss_mb_peak'] or 0,
+                   flood['rss_mb_after'], flood['after_s']), '']
+    return '\n'.join(out) + '\n'
 
 
 def _wakeup_goals(wakeup):
@@ -366,6 +462,8 @@ def markdown(results):
                 % (1000 * p['max_delay_s'], p['control_rate_hz'], p['base_rate_hz'], p['warmup'],
                    p['ended_early'], p['seconds']), '',
                 preemption_table(p)]
+    if 'hostile' in results:
+        out += ['## Hostile input', '', hostile_text(results['hostile'])]
     if 'behaviour' in results:
         out += ['## Behaviour', '', behaviour_text(results['behaviour'])]
     if results.get('durations_s'):

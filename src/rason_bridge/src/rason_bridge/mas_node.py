@@ -21,10 +21,11 @@ import rospy
 from rospy.impl.rosout import RosOutHandler
 from rason_msgs.msg import Action, AgentMessage, Event, Perception, Presence
 
+from rason_bridge.coalesce import FloodEnd, PerceptionCoalescer
+from rason_bridge.exits import exit_for_shutdown
 from rason_bridge.fleet_auth import OFF, auth_settings, no_key_help, to_int64, to_uint64
 from rason_bridge.jvm import JvmError, start_jvm
-from rason_bridge.exits import exit_for_shutdown
-from rason_bridge.limits import apply_input_limits
+from rason_bridge.limits import apply_input_limits, seconds_to_nanos
 from rason_bridge.outbox import DEFERRED, NO_DECOMPOSER, ActionOutbox
 from rason_bridge.peers import HELD, MessageOutbox
 from rason_bridge.trust import apply_trust
@@ -55,6 +56,13 @@ _LOG_POLL = 0.02
 _LOG_BATCH = 500
 #: How long the outbound thread blocks in Java waiting for the agents' next action or message (ms).
 _OUTBOUND_WAIT_MS = 200
+#: How long the perception thread waits for a message before it looks at its stop flag (s),
+#: and how often at most it logs what a flood made it skip (s, wall clock).
+_PERCEIVE_WAIT = 0.2
+_COALESCED_LOG_PERIOD = 10.0
+#: How long a message from a new source may hold its connection back while max_sources
+#: others wait, before it is dropped (s).
+_ROOM_WAIT = 1.0
 
 
 class RasonMasNode(object):
@@ -86,16 +94,16 @@ class RasonMasNode(object):
         import jpype  # the JVM is started by main() before this point
         self._jpype = jpype
         self._bridge = jpype.JClass('rason.bridge.Bridge').get()
-        self._bridge.setActionTimeoutNanos(int(action_timeout * 1e9))
-        self._bridge.setPerceptionTtlNanos(int(perception_ttl * 1e9))
+        self._bridge.setActionTimeoutNanos(seconds_to_nanos('action_timeout', action_timeout))
+        self._bridge.setPerceptionTtlNanos(seconds_to_nanos('perception_ttl', perception_ttl))
         if presence_period <= 0 or presence_timeout <= presence_period:
             raise ValueError('presence_timeout (%s s) must be longer than presence_period (%s s) > 0'
                              % (presence_timeout, presence_period))
-        self._bridge.setPresenceTimeoutNanos(int(presence_timeout * 1e9))
-        self._bridge.setAskTimeoutNanos(int(ask_timeout * 1e9))
+        self._bridge.setPresenceTimeoutNanos(seconds_to_nanos('presence_timeout', presence_timeout))
+        self._bridge.setAskTimeoutNanos(seconds_to_nanos('ask_timeout', ask_timeout))
         if decomposer_grace < 0:
             raise ValueError('decomposer_grace must be 0 s or more, not %s' % decomposer_grace)
-        self._bridge.setDecomposerGraceNanos(int(decomposer_grace * 1e9))
+        self._bridge.setDecomposerGraceNanos(seconds_to_nanos('decomposer_grace', decomposer_grace))
         self._bridge.setPresenceBeliefs(bool(presence_beliefs))
         try:
             self._bridge.setDefaultPerceptionManager(perception_manager)
@@ -143,6 +151,8 @@ class RasonMasNode(object):
         self._action_item = jpype.JClass(outbound + 'Action')
         self._cancel_item = jpype.JClass(outbound + 'Cancel')
         self._events_sub = None
+        self._perceptions = None  # the coalescer, made in start() once the limits are set
+        self._perceive_thread = None
         self._message_item = jpype.JClass(outbound + 'AgentMessage')
         self._stop_item = jpype.JClass(outbound + 'Stop')
         self._bridge.attach()  # the agents' outbox and log are ours from now on
@@ -199,6 +209,11 @@ class RasonMasNode(object):
     def start(self):
         """Subscribe to the jason/* topics and start the agents' reasoning."""
         self._outbox.refresh_listed()
+        self._perceptions = PerceptionCoalescer(
+            max_sources=int(self._bridge.limits().maxSources()),
+            max_source_length=int(self._jpype.JClass('rason.bridge.InputLimits').MAX_SOURCE_LENGTH))
+        self._perceive_thread = threading.Thread(target=self._perceive_loop, name='rason_perceive', daemon=True)
+        self._perceive_thread.start()
         self._events_sub = events_sub = rospy.Subscriber('jason/event', Event, self._on_event,
                                       queue_size=None, tcp_nodelay=True)
         rospy.Subscriber('jason/perception', Perception, self._on_perception,
@@ -236,6 +251,8 @@ class RasonMasNode(object):
         # first, so the other processes stop counting on our agents at once
         self._presence_stop.set()
         self._announce(leaving=True)
+        if self._perceptions is not None:
+            self._perceptions.close()
         self._bridge.shutdown('shutdown')
         time.sleep(grace)
         if self._mas is not None:
@@ -264,7 +281,30 @@ class RasonMasNode(object):
     # ---- ROS -> agents -------------------------------------------------------------
 
     def _on_perception(self, msg):
-        self._bridge.perceive(msg.source, msg.perception, _ros_now_ns())
+        # Only stored: the newest message of its source wins (see rason_bridge.coalesce), so
+        # a flood never queues up here, in TCP or in the publisher in front of the agents.
+        self._perceptions.put(msg.source, msg.perception, _ros_now_ns(), wait=_ROOM_WAIT)
+
+    def _perceive_loop(self):
+        # The one thread that hands perceptions to Java (parsed there, then to every agent).
+        next_summary = time.monotonic() + _COALESCED_LOG_PERIOD
+        flood = FloodEnd()
+        while not self._stopping and not rospy.is_shutdown():
+            if flood.ended(self._perceptions.overtaken(), time.monotonic()):
+                self._bridge.releaseMemory()  # what the flood made the JVM grow goes back now
+            item = self._perceptions.take(_PERCEIVE_WAIT)
+            if item is not None:
+                source, literals, stamp = item
+                try:
+                    self._bridge.perceive(source, literals, stamp)
+                except Exception as e:  # a bug must not end the thread every perception goes through
+                    rospy.logerr('could not hand the perception of %r to the agents: %s', source[:100], e)
+            if time.monotonic() >= next_summary:
+                next_summary = time.monotonic() + _COALESCED_LOG_PERIOD
+                line = self._perceptions.summary()
+                if line:
+                    rospy.logwarn('perceptions come faster than the agents take them: %s in the last %.0f s',
+                                  line, _COALESCED_LOG_PERIOD)
 
     def _on_event(self, msg):
         # parsed and checked in Java; the publisher is the decomposer to watch after action_started
@@ -509,9 +549,10 @@ def main(argv=None):
     ``ask_timeout`` (float s, 60; 0 disables), ``perception_manager`` (str, per_source),
     ``decomposer_grace`` (float s, 0.5), and the input limits ``max_literal_length`` (int, 4096),
     ``max_content_length`` (int, 65536), ``max_nesting`` (int, 32), ``max_term_depth`` (int, 512),
-    ``max_literals`` (int, 1000) (see :mod:`rason_bridge.limits`), and the fleet authentication's
-    ``fleet_auth`` (required or off), ``fleet_key_file`` (str, $ROS_HOME/rason/fleet.key),
-    ``fleet_key`` (str), ``auth_window`` (float s, 60; 0 disables) (see :mod:`rason_bridge.fleet_auth`).
+    ``max_literals`` (int, 1000), ``max_sources`` (int, 100) (see :mod:`rason_bridge.limits`), and the
+    fleet authentication's ``fleet_auth`` (required or off), ``fleet_key_file`` (str,
+    $ROS_HOME/rason/fleet.key), ``fleet_key`` (str), ``auth_window`` (float s, 60; 0 disables)
+    (see :mod:`rason_bridge.fleet_auth`).
     Publishes the hosted agents' names on the ``~agents`` parameter.
     """
     args = rospy.myargv(argv if argv is not None else sys.argv)

@@ -11,6 +11,7 @@ import jason.JasonException;
 import jason.ReceiverNotFoundException;
 import jason.architecture.AgArch;
 import jason.asSemantics.ActionExec;
+import jason.asSemantics.CircumstanceListener;
 import jason.asSemantics.Intention;
 import jason.asSemantics.Message;
 import jason.asSemantics.TransitionSystem;
@@ -53,6 +54,12 @@ public class RosAgArch extends AgArch {
             this::dataArrived);
     private final RemoteAsks asks = new RemoteAsks();
     private final SentAsks sentAsks = new SentAsks();
+    // Jason's take-back hooks, in the agent's circumstance only while it has actions pending:
+    // with any listener there, Jason makes an event of every belief change, plans or not
+    // (Agent.buf), and the agent spends a reasoning cycle on each: 1000 new percepts delayed
+    // its next plan by 1000 cycles. Added and removed on the agent's thread only.
+    private final CircumstanceListener takeBack = actions.listener();
+    private boolean listening = false;
     private volatile PerceptionManager perception = new SelectivePerception(new PerSourcePerception(), null);
     private volatile String failAsksReason = null; // set at shutdown
     private volatile List<Literal> presence = List.of();
@@ -72,7 +79,6 @@ public class RosAgArch extends AgArch {
         }
         if (!PerceptionManagers.PER_SOURCE.equals(perception.toString()))
             Bridge.log(Level.INFO, "[" + getAgName() + "] perception: " + perception);
-        getTS().getC().addEventListener(actions.listener());
         bridge.register(this);
     }
 
@@ -98,8 +104,13 @@ public class RosAgArch extends AgArch {
         String stopping = bridge.shutdownReason();
         if (stopping != null)
             complete(action, stopping);
-        else
+        else {
             actions.start(action, bridge.clock().now());
+            if (!listening) { // before the intention can be dropped: that happens in a later step of this thread
+                getTS().getC().addEventListener(takeBack);
+                listening = true;
+            }
+        }
     }
 
     /** Feedback for one of this agent's actions (from a ROS thread); false if none such is pending. */
@@ -145,6 +156,10 @@ public class RosAgArch extends AgArch {
         for (ActionTable.Settled<ActionExec> s : actions.takeSettled())
             complete(s.action(), s.result());
         settleRemoteAsks();
+        if (listening && actions.pendingCount() == 0) { // nothing left to take back
+            getTS().getC().removeEventListener(takeBack);
+            listening = false;
+        }
         super.reasoningCycleStarting();
     }
 

@@ -23,7 +23,7 @@ import rason.messaging.TrustPolicy;
 import rason.messaging.WarnOnce;
 import rason.messaging.WireMessage;
 import rason.perception.PerceptionManagers;
-import rason.perception.Perceptions;
+import rason.perception.PerceptionSources;
 
 /**
  * Where one rospy process meets the agents its JVM hosts (one per JVM, since
@@ -46,6 +46,7 @@ public final class Bridge implements Fleet.Listener {
     private final Fleet fleet = new Fleet(logger, this, limited);
     private final WarnOnce warned = new WarnOnce(logger);
     private final TrustPolicy trust = new TrustPolicy();
+    private final PerceptionSources sources = new PerceptionSources();
     private final Object presencePushLock = new Object();
     // Ids start at a random point of each run, so a restarted process (or a second one for the
     // same agent name) does not reuse the ids a decomposer may still hold; 0 is never used
@@ -132,9 +133,14 @@ public final class Bridge implements Fleet.Listener {
 
     // ---- life cycle --------------------------------------------------------------------
 
-    /** A rospy node takes the outbox and the log from now on. */
+    /**
+     * A rospy node takes the outbox and the log from now on: the sources an earlier one
+     * heard are forgotten and its rate-limited warnings summarised.
+     */
     public void attach() {
         shutdownReason = null;
+        sources.clear();
+        limited.endAll(System.nanoTime());
         outbox.open();
         attached = true;
     }
@@ -203,31 +209,51 @@ public final class Bridge implements Fleet.Listener {
     /**
      * A rason_msgs/Perception arrived: parse it once and hand it to every agent.
      * Unparsable literals are logged with their source and dropped; the rest is kept.
+     * Called by one thread of the node, with the newest message of a source (see the
+     * node's coalescing); a literal the source's previous message had is not parsed again.
      *
      * @return how many literals were accepted
      */
     public int perceive(String source, String[] texts, long nowNanos) {
         InputLimits limits = InputLimits.current();
         String shownSource = InputLimits.abbreviate(source, 100);
+        if (source.length() > InputLimits.MAX_SOURCE_LENGTH) {
+            limited.warn(DROPPED_PERCEPTION, "dropped perception message from source '" + shownSource
+                    + "': source name longer than " + InputLimits.MAX_SOURCE_LENGTH + " characters", System.nanoTime());
+            return 0;
+        }
         if (texts.length > limits.maxLiterals()) {
             limited.warn(DROPPED_PERCEPTION, "dropped perception message from source '" + shownSource + "': "
                     + texts.length + " literals, more than " + limits.maxLiterals() + " (the source's percepts are unchanged)",
                     System.nanoTime());
             return 0;
         }
-        List<Literal> literals = new ArrayList<>(texts.length);
-        for (String text : texts) {
-            try {
-                literals.add(Perceptions.parse(text, limits));
-            } catch (IllegalArgumentException e) {
-                limited.warn(DROPPED_PERCEPTION, "dropped perception '" + InputLimits.abbreviate(text, 200)
-                        + "' from source '" + shownSource + "': " + e.getMessage(), System.nanoTime());
-            }
+        List<Literal> literals = sources.parse(source, texts, nowNanos, limits,
+                (text, why) -> limited.warn(DROPPED_PERCEPTION, "dropped perception '" + InputLimits.abbreviate(text, 200)
+                        + "' from source '" + shownSource + "': " + why, System.nanoTime()));
+        if (literals == null) {
+            limited.warn(DROPPED_PERCEPTION, "dropped perception message from source '" + shownSource + "': more than "
+                    + limits.maxSources() + " sources heard within ~perception_ttl and this one is new"
+                    + " (the others' percepts are unchanged)", System.nanoTime());
+            return 0;
         }
         List<Literal> shared = List.copyOf(literals);
         for (RosAgArch arch : registry.all())
             arch.perceptionUpdate(source, shared, nowNanos);
         return shared.size();
+    }
+
+    /**
+     * A burst of input is over (the node saw a perception flood end): a garbage collection now
+     * lets the JVM shrink the heap the burst grew (concurrent with the node's JVM options).
+     */
+    public void releaseMemory() {
+        System.gc();
+    }
+
+    /** The perception sources remembered now (bounded by {@link InputLimits#maxSources()}). */
+    public int perceptionSources() {
+        return sources.size();
     }
 
     /**
@@ -290,6 +316,7 @@ public final class Bridge implements Fleet.Listener {
     public void tick(long nowNanos) {
         clock.set(nowNanos);
         limited.tick(System.nanoTime());
+        sources.expire(nowNanos, perceptionTtlNanos);
         for (RosAgArch arch : registry.all())
             arch.tick(nowNanos, actionTimeoutNanos, perceptionTtlNanos);
     }

@@ -26,6 +26,9 @@ public final class InputLimits {
     public static final int DEFAULT_MAX_TERM_DEPTH = 512;
     public static final int DEFAULT_MAX_LITERALS = 1000;
     public static final int DEFAULT_MAX_CONTENT_LENGTH = 64 * 1024;
+    public static final int DEFAULT_MAX_SOURCES = 100;
+    /** Characters of a perception source's name: every per-source table holds the names. */
+    public static final int MAX_SOURCE_LENGTH = 256;
 
     private static final InputLimits CURRENT = new InputLimits();
 
@@ -34,6 +37,7 @@ public final class InputLimits {
     private volatile int maxTermDepth = DEFAULT_MAX_TERM_DEPTH;
     private volatile int maxLiterals = DEFAULT_MAX_LITERALS;
     private volatile int maxContentLength = DEFAULT_MAX_CONTENT_LENGTH;
+    private volatile int maxSources = DEFAULT_MAX_SOURCES;
 
     /** The limits the bridge applies. */
     public static InputLimits current() {
@@ -91,6 +95,20 @@ public final class InputLimits {
     /** Characters of one agent message's content. */
     public InputLimits setMaxContentLength(int n) {
         maxContentLength = positive("max_content_length", n);
+        return this;
+    }
+
+    public int maxSources() {
+        return maxSources;
+    }
+
+    /**
+     * Perception sources remembered at once (heard within the perception TTL and not
+     * cleared); a message from a new source beyond them is dropped, so a flood of
+     * distinct source names cannot grow the per-source tables without bound.
+     */
+    public InputLimits setMaxSources(int n) {
+        maxSources = positive("max_sources", n);
         return this;
     }
 

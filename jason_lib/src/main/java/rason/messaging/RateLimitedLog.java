@@ -101,11 +101,20 @@ public final class RateLimitedLog {
 
     /** Ends the periods that are over, logging the summary of those that suppressed lines. */
     public void tick(long nowNanos) {
+        endPeriods(nowNanos, false);
+    }
+
+    /** Ends every period now, over or not, logging the summaries: each kind has all its lines again. */
+    public void endAll(long nowNanos) {
+        endPeriods(nowNanos, true);
+    }
+
+    private void endPeriods(long nowNanos, boolean all) {
         List<Line> out = new ArrayList<>();
         synchronized (windows) {
             for (Iterator<Map.Entry<String, Window>> it = windows.entrySet().iterator(); it.hasNext();) {
                 Map.Entry<String, Window> e = it.next();
-                if (nowNanos - e.getValue().start >= periodNanos) {
+                if (all || nowNanos - e.getValue().start >= periodNanos) {
                     it.remove();
                     Line s = summary(e.getKey(), e.getValue(), nowNanos);
                     if (s != null)

@@ -4,6 +4,7 @@ import java.util.ArrayDeque;
 import java.util.Deque;
 
 import jason.asSyntax.ASSyntax;
+import jason.asSyntax.Atom;
 import jason.asSyntax.ListTerm;
 import jason.asSyntax.Literal;
 import jason.asSyntax.NumberTerm;
@@ -14,6 +15,14 @@ import rason.bridge.InputLimits;
 
 /** Parses the text of one perception into a Jason literal, refusing what cannot be a percept. */
 public final class Perceptions {
+
+    /**
+     * The annotation a perception may not carry: Jason adds {@code source(percept)} to every
+     * percept and keeps the literal's own annotations, so {@code fake(1)[source(alice)]}
+     * would be believed as something alice said. No other annotation means anything to
+     * Jason's belief base (the bridge adds none), so the others are kept as data.
+     */
+    public static final String RESERVED_ANNOTATION = "source";
 
     private Perceptions() {
     }
@@ -54,7 +63,20 @@ public final class Perceptions {
         String nonFinite = nonFinite(literal);
         if (nonFinite != null)
             throw new IllegalArgumentException("not a finite number: " + nonFinite);
+        if (reserved(literal))
+            throw new IllegalArgumentException("annotation " + RESERVED_ANNOTATION
+                    + "(...) is reserved: Jason sets source(percept)");
         return literal;
+    }
+
+    /** Whether one of the literal's own annotations is source(...), of any arity (an argument's annotations are data). */
+    static boolean reserved(Literal literal) {
+        if (!literal.hasAnnot())
+            return false;
+        for (Term annot : literal.getAnnots())
+            if (annot instanceof Atom a && RESERVED_ANNOTATION.equals(a.getFunctor()))
+                return true;
+        return false;
     }
 
     /**

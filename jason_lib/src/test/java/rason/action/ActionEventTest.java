@@ -47,8 +47,16 @@ class ActionEventTest {
             "OK          |             | needs parameters",
             "OK          | seven       | non-integer action id",
             "OK          | 1.5         | non-integer action id",
-            "OK          | 2147483648  | non-integer action id",
-            "OK          | -2147483649 | non-integer action id",
+            "OK          | 2147483648  | action id 2147483648 outside 1..2147483647",
+            "OK          | -2147483649 | outside 1..2147483647",
+            "OK          | -1          | action id -1 outside 1..2147483647",
+            "OK          | 0           | action id 0 outside 1..2147483647",
+            "OK          | 00000000000000000000 | outside 1..2147483647",
+            "OK          | 1e3         | non-integer action id '1e3'",
+            "OK          | 0x10        | non-integer action id",
+            "OK          | NaN         | non-integer action id",
+            "OK          | '-'         | non-integer action id",
+            "OK          | ''          | non-integer action id ''",
             "'  '        | 1           | empty result",
     })
     void malformedParametersAreRefusedWithAReason(String result, String id, String why) {
@@ -56,6 +64,24 @@ class ActionEventTest {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> ActionEvent.parse("action_feedback", parameters));
         assertTrue(e.getMessage().contains(why), e.getMessage());
+    }
+
+    @Test
+    void idsFromOneToTheLargest32BitIntegerAreTaken() {
+        assertEquals(1, ActionEvent.parse("action_feedback", new String[] { "OK", "1" }).actionId());
+        assertEquals(Integer.MAX_VALUE, ActionEvent.parse("action_feedback", new String[] { "OK", "2147483647" }).actionId());
+        assertEquals(12, ActionEvent.parse("action_feedback", new String[] { "OK", "+0012" }).actionId());
+    }
+
+    @Test
+    void aMillionDigitIdIsRefusedQuicklyAndShownShort() {
+        String id = "9".repeat(1_000_000);
+        long t0 = System.nanoTime();
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> ActionEvent.parse("action_started", new String[] { id }));
+        assertTrue(System.nanoTime() - t0 < 1_000_000_000L);
+        assertTrue(e.getMessage().contains("outside 1..2147483647"), e.getMessage());
+        assertTrue(e.getMessage().length() < 300, e.getMessage());
     }
 
     @Test

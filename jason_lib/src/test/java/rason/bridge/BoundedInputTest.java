@@ -79,4 +79,55 @@ class BoundedInputTest {
         RunningAgents.await("the agent reacts to go", () -> RunningAgents.believes(arch, "went"));
         assertTrue(RunningAgents.believes(arch, "x(999)"));
     }
+
+    @Test
+    void aPerceptionCannotSayWhoSaidIt() throws Exception {
+        RosAgArch arch = agents.start(dir, "bob", "+go <- +went.\n");
+        logger.addHandler(handler);
+        assertEquals(2, bridge.perceive("synth", new String[] { "fake(1)[source(alice)]", "~fake(2)[source(self)]",
+                "real(1)[certainty(0.9)]", "go" }, 100 * RunningAgents.SECOND));
+        RunningAgents.await("the agent reacts to go", () -> RunningAgents.believes(arch, "went"));
+        assertTrue(RunningAgents.believes(arch, "real(1)[certainty(0.9),source(percept)]"));
+        assertTrue(!RunningAgents.believes(arch, "fake(1)") && !RunningAgents.believes(arch, "~fake(2)"));
+        assertEquals(2, linesContaining("annotation source(...) is reserved: Jason sets source(percept)"));
+        assertEquals(1, linesContaining("dropped perception 'fake(1)[source(alice)]' from source 'synth'"));
+    }
+
+    @Test
+    void aFloodOfNewSourcesIsBoundedAndKnownSourcesGoOn() throws Exception {
+        RosAgArch arch = agents.start(dir, "bob", "+go <- +went.\n");
+        logger.addHandler(handler);
+        assertEquals(1, bridge.perceive("known", new String[] { "early(1)" }, 100 * RunningAgents.SECOND));
+        assertEquals(0, bridge.perceive("s".repeat(InputLimits.MAX_SOURCE_LENGTH + 1), new String[] { "x(1)" },
+                100 * RunningAgents.SECOND));
+        assertTrue(linesContaining("source name longer than 256 characters") == 1, lines.toString());
+        int max = InputLimits.current().maxSources();
+        for (int i = 0; i < 3 * max; i++)
+            bridge.perceive("flood_" + i, new String[] { "s(" + i + ")" }, 100 * RunningAgents.SECOND);
+        assertEquals(max, bridge.perceptionSources());
+        assertTrue(linesContaining("more than " + max + " sources heard within ~perception_ttl and this one is new")
+                <= RateLimitedLog.DEFAULT_LINES);
+        assertEquals(2, bridge.perceive("known", new String[] { "early(1)", "go" }, 100 * RunningAgents.SECOND));
+        RunningAgents.await("the agent reacts to go", () -> RunningAgents.believes(arch, "went"));
+        assertTrue(RunningAgents.believes(arch, "early(1)"));
+        bridge.tick(103 * RunningAgents.SECOND); // all silent for longer than the TTL (2 s)
+        assertEquals(0, bridge.perceptionSources());
+        assertEquals(1, bridge.perceive("late", new String[] { "late(1)" }, 103 * RunningAgents.SECOND));
+    }
+
+    @Test
+    void eventsWithBadIdsOrHugeNamesAreIgnoredWithAReason() throws Exception {
+        agents.start(dir, "bob", "+go <- +went.\n");
+        logger.addHandler(handler);
+        for (String id : new String[] { "2147483648", "-1", "0", "abc", "1e3", "9".repeat(100_000) }) {
+            assertTrue(!bridge.event("bob", "action_feedback", new String[] { "OK", id }));
+            assertTrue(!bridge.event("bob", "action_started", new String[] { id }, "/decomposer"));
+        }
+        assertTrue(linesContaining("action id 2147483648 outside 1..2147483647") == 2, lines.toString());
+        assertTrue(linesContaining("non-integer action id '1e3'") == 2, lines.toString());
+        String huge = "n".repeat(1 << 20);
+        for (int i = 0; i < 20; i++)
+            assertTrue(!bridge.event(huge + i, "action_feedback", new String[] { "OK", "1" }));
+        assertTrue(lines.stream().allMatch(l -> l.length() < 1000), "no line echoes a whole name or id");
+    }
 }

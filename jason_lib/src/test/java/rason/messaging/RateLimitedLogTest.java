@@ -59,6 +59,17 @@ class RateLimitedLogTest {
     }
 
     @Test
+    void endingAllPeriodsSummarisesThemAndGivesEachKindItsLinesAgain() {
+        for (int i = 0; i < 8; i++)
+            log.warn("dropped perception", "line " + i, 100 * S);
+        log.warn("ignored event", "event", 100 * S);
+        log.endAll(102 * S);
+        assertEquals("dropped perception: … 3 more like this in the last 2 s", lines.texts().get(6));
+        assertEquals(7, lines.records.size(), "no summary where nothing was suppressed");
+        assertTrue(log.warn("dropped perception", "again", 102 * S));
+    }
+
+    @Test
     void theTickAtTheEndOfThePeriodLogsTheSummary() {
         for (int i = 0; i < 10_000; i++)
             log.warn("dropped perception", "line " + i, 100 * S);

@@ -73,4 +73,36 @@ class AccumulatePerceptionTest {
         assertFalse(m.expire(1000 * S, ttl));
         assertEquals(List.of("p(1)"), texts(m.current()));
     }
+
+    @Test
+    void aFloodOfNewLiteralsKeepsTheMostRecentlyHeard() {
+        AccumulatePerception m = new AccumulatePerception(3);
+        m.update("a", lits("p(1)", "p(2)", "p(3)"), 0);
+        m.update("a", lits("p(1)"), 1); // heard again: now the most recent
+        m.update("a", lits("p(4)"), 2);
+        assertEquals(List.of("p(1)", "p(3)", "p(4)"), texts(m.current()));
+        for (int i = 0; i < 100_000; i++)
+            m.update("flood", lits("f(" + i + ")"), 3 + i);
+        assertEquals(List.of("f(99997)", "f(99998)", "f(99999)"), texts(m.current()));
+    }
+
+    @Test
+    void theDefaultBoundHoldsWithoutTtl() {
+        AccumulatePerception m = new AccumulatePerception();
+        for (int i = 0; i < 3 * AccumulatePerception.DEFAULT_MAX_LITERALS; i++)
+            m.update("flood", lits("f(" + i + ")"), i);
+        assertFalse(m.expire(Long.MAX_VALUE / 2, 0));
+        assertEquals(AccumulatePerception.DEFAULT_MAX_LITERALS, m.current().size());
+    }
+
+    @Test
+    void expiryOfTheOldestStopsAtTheFirstOneAlive() {
+        AccumulatePerception m = new AccumulatePerception();
+        m.update("a", lits("p(1)"), 0);
+        m.update("a", lits("p(2)"), 2 * S);
+        m.update("a", lits("p(1)"), 3 * S); // p(1) heard again after p(2)
+        assertFalse(m.expire(4 * S, 2 * S));
+        assertTrue(m.expire(9 * S / 2, 2 * S));
+        assertEquals(List.of("p(1)"), texts(m.current()));
+    }
 }

@@ -39,6 +39,31 @@ class PerceptionsTest {
         assertTrue(e.getMessage().contains(why), e.getMessage());
     }
 
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+            "fake(1)[source(alice)]",
+            "~fake(1)[source(bob)]",
+            "fake(1)[source(percept)]",
+            "fake(1)[quality(high),source(self)]",
+            "fake(1)[source]",
+            "fake(1)[source(a,b)]",
+    })
+    void sourceAnnotationsAreReserved(String text) {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> Perceptions.parse(text));
+        assertEquals("annotation source(...) is reserved: Jason sets source(percept)", e.getMessage());
+    }
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+            "fact(1)[certainty(0.9)]        | fact(1)[certainty(0.9)]",
+            "fact(said(x)[source(alice)])   | fact(said(x)[source(alice)])", // an argument's annotations are data
+            "fact(1)[sources(2)]            | fact(1)[sources(2)]",
+            "fact(1)[\"source\"]            | fact(1)[\"source\"]",
+    })
+    void otherAnnotationsAreData(String text, String expected) {
+        assertEquals(expected, Perceptions.parse(text).toString());
+    }
+
     @Test
     void missingPerceptionIsRefusedAsEmpty() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> Perceptions.parse(null));
