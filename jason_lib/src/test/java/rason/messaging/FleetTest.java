@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
-import java.util.Collection;
 import java.util.List;
 import java.util.Set;
 import java.util.logging.Logger;
@@ -15,26 +14,8 @@ class FleetTest {
 
     private final List<String> stops = new ArrayList<>();
     private final Logger logger = Logger.getLogger("test.fleet");
-    private final Fleet fleet = new Fleet(logger, new Fleet.Listener() {
-        @Override
-        public void reachableChanged() {
-        }
-
-        @Override
-        public void receiversLost(Collection<String> names) {
-        }
-
-        @Override
-        public void mustStop(String why) {
-            stops.add(why);
-        }
-    }, new RateLimitedLog(logger), authWithKeyA());
-
-    private static FleetAuth authWithKeyA() {
-        FleetAuth auth = new FleetAuth();
-        auth.require(SigningPeer.keys(SigningPeer.KEY_A));
-        return auth;
-    }
+    private final Fleet fleet = new Fleet(logger, SigningPeer.stopsInto(stops), new RateLimitedLog(logger),
+            SigningPeer.authWithKeyA());
 
     private void hosting(String masId, long incarnation, String... agents) {
         fleet.setMasId(masId);

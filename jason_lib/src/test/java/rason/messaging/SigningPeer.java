@@ -1,5 +1,6 @@
 package rason.messaging;
 
+import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
 import java.util.logging.Logger;
@@ -47,9 +48,22 @@ final class SigningPeer {
 
     /** A fleet (this process) with the test key A and a listener that ignores everything. */
     static Fleet fleet(Logger logger, RateLimitedLog limited, String masId, long incarnation) {
+        Fleet f = new Fleet(logger, stopsInto(new ArrayList<>()), limited, authWithKeyA());
+        f.setMasId(masId);
+        f.setIncarnation(incarnation);
+        return f;
+    }
+
+    /** Authentication required, with the test key A. */
+    static FleetAuth authWithKeyA() {
         FleetAuth auth = new FleetAuth();
         auth.require(keys(KEY_A));
-        Fleet f = new Fleet(logger, new Fleet.Listener() {
+        return auth;
+    }
+
+    /** A fleet listener that keeps the reasons it is told to stop in stops and ignores the rest. */
+    static Fleet.Listener stopsInto(List<String> stops) {
+        return new Fleet.Listener() {
             @Override
             public void reachableChanged() {
             }
@@ -60,10 +74,8 @@ final class SigningPeer {
 
             @Override
             public void mustStop(String why) {
+                stops.add(why);
             }
-        }, limited, auth);
-        f.setMasId(masId);
-        f.setIncarnation(incarnation);
-        return f;
+        };
     }
 }
