@@ -89,18 +89,21 @@ public class RasonLocalMAS extends RunLocalMAS {
         project.setupDefault();
         project.getSourcePaths().setRoot(file.getParent());
         project.registerDirectives();
-        ((Include) DirectiveProcessor.getDirective("include")).setSourcePath(project.getSourcePaths());
+        Include include = (Include) DirectiveProcessor.getDirective("include");
+        include.setSourcePath(project.getSourcePaths());
+        projectInclude().setProject(file.getParentFile(), projectSourcePaths());
 
         for (AgentParameters ap : project.getAgents()) {
             // .asl paths in a .mas2j are relative to the project file, not to the working directory
             String src = ap.getSource() == null ? ap.name + ".asl" : ap.getSource().toString();
             if (src.startsWith("file:"))
                 src = src.substring("file:".length());
-            File asl = new File(src);
-            if (!asl.isAbsolute())
-                asl = new File(file.getParentFile(), src);
-            if (!asl.isFile())
-                throw new JasonException("agent '" + ap.name + "': source file not found: " + asl);
+            // the project's directory, then its aslSourcePath (as Jason does, but never the working directory)
+            List<File> tried = projectInclude().candidates(src, null);
+            File asl = tried.stream().filter(File::isFile).findFirst().orElse(null);
+            if (asl == null)
+                throw new JasonException("agent '" + ap.name + "': source file not found: "
+                        + (tried.size() == 1 ? tried.get(0) : "tried " + tried));
             ap.setSource(asl.getPath());
             if (!ap.getAgArchClasses().contains(ARCH_CLASS))
                 ap.addArchClass(ARCH_CLASS);
@@ -165,6 +168,36 @@ public class RasonLocalMAS extends RunLocalMAS {
         if (!missing.isEmpty())
             throw new JasonException("agent" + (missing.size() > 1 ? "s " : " ") + String.join(", ", missing)
                     + " could not be created (Jason's error is above)");
+        // Jason runs an agent without a file it could not include: here the project does not start
+        List<String> includes = projectInclude().failures();
+        if (!includes.isEmpty())
+            throw new JasonException(String.join("; ", includes));
+    }
+
+    static {
+        // before Jason makes its own include directive: the parser and .include then use this one
+        DirectiveProcessor.registerDirective("include", ProjectInclude.class);
+    }
+
+    /**
+     * The include directive every agent's parser and {@code .include} use.
+     *
+     * @throws JasonException if Jason made its own before this class was loaded
+     */
+    private static ProjectInclude projectInclude() throws JasonException {
+        if (DirectiveProcessor.getDirective("include") instanceof ProjectInclude p)
+            return p;
+        throw new JasonException("Jason's include directive was created before rason.infra.RasonLocalMAS was loaded:"
+                + " includes would be resolved from the working directory");
+    }
+
+    /** The project's aslSourcePath entries as Jason keeps them (without the working-directory variants it adds). */
+    private static List<String> projectSourcePaths() {
+        List<String> out = new ArrayList<>();
+        for (String p : project.getSourcePaths().getPaths())
+            if (!p.contains("/file:"))
+                out.add(p);
+        return out;
     }
 
     /**
