@@ -4,8 +4,10 @@ import java.io.File;
 import java.io.FileInputStream;
 import java.io.InputStream;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.logging.Handler;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -236,6 +238,41 @@ public class RasonLocalMAS extends RunLocalMAS {
 
     private static String unquote(String s) {
         return s != null && s.length() >= 2 && s.startsWith("\"") && s.endsWith("\"") ? s.substring(1, s.length() - 1) : s;
+    }
+
+    // ---- the directory facilitator: the fleet's (see rason.messaging.FleetDirectory), without a df agent ----
+    // Jason's local DF is an agent called df, created on first use: it would be announced as
+    // one of this robot's agents and clash with every other robot's df.
+
+    @Override
+    public void dfRegister(String agName, String service) {
+        Bridge.get().dfRegister(agName, service);
+    }
+
+    @Override
+    public void dfDeRegister(String agName, String service) {
+        Bridge.get().dfDeregister(agName, service);
+    }
+
+    @Override
+    public Collection<String> dfSearch(String service) {
+        return Bridge.get().dfSearch(service);
+    }
+
+    @Override
+    public void dfSubscribe(String agName, String service) {
+        Bridge.get().dfSubscribe(agName, service);
+    }
+
+    @Override
+    public Map<String, Set<String>> getDF() {
+        return Bridge.get().fleet().directory().byAgent();
+    }
+
+    @Override
+    public LocalAgArch delAg(String agName) {
+        Bridge.get().dfAgentGone(agName);
+        return super.delAg(agName);
     }
 
     @Override
