@@ -32,11 +32,21 @@ public class ProjectInclude extends Include {
     private volatile File projectDir = null;
     private volatile List<String> sourcePaths = List.of();
     private final List<String> failures = new ArrayList<>(); // guarded by itself
+    private volatile boolean loading = false; // failures are kept while the project's agents are made
 
     /** The project's directory and its aslSourcePath entries (as the .mas2j writes them). */
     public void setProject(File directory, List<String> paths) {
         projectDir = directory;
         sourcePaths = List.copyOf(paths);
+        synchronized (failures) {
+            failures.clear();
+        }
+        loading = true;
+    }
+
+    /** The project's agents are made: later failures (of .include) are only logged. */
+    public void loaded() {
+        loading = false;
         synchronized (failures) {
             failures.clear();
         }
@@ -59,9 +69,10 @@ public class ProjectInclude extends Include {
         if (found == null) {
             String line = "agent '" + agentName(outerContent) + "': included file '" + name + "' not found; tried "
                     + tried;
-            synchronized (failures) {
-                failures.add(line);
-            }
+            if (loading)
+                synchronized (failures) {
+                    failures.add(line);
+                }
             logger.log(Level.SEVERE, line);
             return null;
         }
@@ -113,7 +124,7 @@ public class ProjectInclude extends Include {
         return null;
     }
 
-    /** What went wrong so far (one line per include not found); cleared when a project is loaded. */
+    /** The includes not found while the project's agents were made (one line each). */
     public List<String> failures() {
         synchronized (failures) {
             return new ArrayList<>(failures);

@@ -172,6 +172,7 @@ public class RasonLocalMAS extends RunLocalMAS {
                     + " could not be created (Jason's error is above)");
         // Jason runs an agent without a file it could not include: here the project does not start
         List<String> includes = projectInclude().failures();
+        projectInclude().loaded();
         if (!includes.isEmpty())
             throw new JasonException(String.join("; ", includes));
     }
