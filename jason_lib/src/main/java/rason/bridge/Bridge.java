@@ -6,16 +6,22 @@ import java.util.Collection;
 import java.util.List;
 import java.util.Set;
 import java.util.TreeSet;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 
+import jason.asSemantics.Message;
+import jason.asSyntax.ASSyntax;
+import jason.asSyntax.Atom;
 import jason.asSyntax.Literal;
+import jason.asSyntax.StringTermImpl;
 import jason.infra.local.LocalAgArch;
 
 import rason.RosAgArch;
 import rason.action.ActionEvent;
 import rason.messaging.Fleet;
 import rason.messaging.FleetAuth;
+import rason.messaging.FleetDirectory;
 import rason.messaging.FleetKeys;
 import rason.messaging.Messages;
 import rason.messaging.RateLimitedLog;
@@ -502,7 +508,7 @@ public final class Bridge implements Fleet.Listener {
     /** Jason's name for the directory facilitator: subscribers hear from it, as in one MAS. */
     public static final String DF_NAME = "df";
 
-    private final java.util.concurrent.atomic.AtomicBoolean announceQueued = new java.util.concurrent.atomic.AtomicBoolean();
+    private final AtomicBoolean announceQueued = new AtomicBoolean();
 
     public void dfRegister(String agent, String service) {
         if (fleet.directory().register(agent, service))
@@ -530,7 +536,7 @@ public final class Bridge implements Fleet.Listener {
     }
 
     /** Our registrations, for the presence the node is about to announce (a later change queues another). */
-    public rason.messaging.FleetDirectory.Announced dfAnnounced() {
+    public FleetDirectory.Announced dfAnnounced() {
         announceQueued.set(false);
         return fleet.directory().announced();
     }
@@ -547,15 +553,14 @@ public final class Bridge implements Fleet.Listener {
      * the messages in their mailboxes: each agent takes them on its own thread.
      */
     @Override
-    public void providersChanged(List<rason.messaging.FleetDirectory.Notice> notices) {
+    public void providersChanged(List<FleetDirectory.Notice> notices) {
         var hosted = AgentRegistry.jasonAgents();
-        for (rason.messaging.FleetDirectory.Notice n : notices) {
+        for (FleetDirectory.Notice n : notices) {
             LocalAgArch la = hosted.get(n.subscriber());
             if (la == null)
                 continue;
-            Literal provider = jason.asSyntax.ASSyntax.createLiteral("provider", new jason.asSyntax.Atom(n.provider()),
-                    new jason.asSyntax.StringTermImpl(n.service()));
-            la.receiveMsg(new jason.asSemantics.Message(n.added() ? "tell" : "untell", DF_NAME, n.subscriber(), provider));
+            Literal provider = ASSyntax.createLiteral("provider", new Atom(n.provider()), new StringTermImpl(n.service()));
+            la.receiveMsg(new Message(n.added() ? "tell" : "untell", DF_NAME, n.subscriber(), provider));
         }
     }
 

@@ -11,7 +11,9 @@ import java.util.logging.Logger;
 
 import jason.asSemantics.Agent;
 import jason.asSyntax.Pred;
+import jason.asSyntax.StringTerm;
 import jason.asSyntax.StringTermImpl;
+import jason.asSyntax.Term;
 import jason.asSyntax.directives.Include;
 
 /**
@@ -56,7 +58,7 @@ public class ProjectInclude extends Include {
     public Agent process(Pred directive, Agent outerContent, Agent innerContent) {
         if (outerContent == null || directive.getArity() < 1 || !directive.getTerm(0).isString())
             return super.process(directive, outerContent, innerContent);
-        String name = ((jason.asSyntax.StringTerm) directive.getTerm(0)).getString().replace('\\', '/');
+        String name = ((StringTerm) directive.getTerm(0)).getString().replace('\\', '/');
         if (isUrl(name) || name.startsWith("$"))
             return super.process(directive, outerContent, innerContent);
         List<File> tried = candidates(name, includingSource(directive, outerContent));
@@ -118,7 +120,7 @@ public class ProjectInclude extends Include {
     private static String includingSource(Pred directive, Agent outer) {
         if (outer.getASLSrc() != null && !outer.getASLSrc().isEmpty())
             return outer.getASLSrc();
-        for (jason.asSyntax.Term t : new jason.asSyntax.Term[] { directive, directive.getTerm(0) })
+        for (Term t : new Term[] { directive, directive.getTerm(0) })
             if (t.getSrcInfo() != null && t.getSrcInfo().getSrcFile() != null)
                 return t.getSrcInfo().getSrcFile();
         return null;
