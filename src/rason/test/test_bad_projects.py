@@ -50,6 +50,11 @@ class TestBadProjects(unittest.TestCase):
         _, fatal = self.refused('bad_trust.mas2j', 'bad_trust')
         self.assertIn('trust_tellhow', fatal)
 
+    def test_a_missing_include_is_named_with_every_path_tried(self):
+        _, fatal = self.refused('missing_include.mas2j', 'missing_include')
+        self.assertIn("agent 'a': included file 'no_such_file.asl' not found; tried [%s]"
+                      % os.path.join(os.path.realpath(BAD), 'no_such_file.asl'), fatal)
+
     def test_an_agent_that_cannot_be_created_stops_the_node_after_jasons_error(self):
         out, fatal = self.refused('one_broken.mas2j', 'one_broken')
         self.assertIn('agent b could not be created', fatal)

@@ -128,16 +128,17 @@ def run(log, robot, agent, text, expect, timeout=15.0):
     return re.search(r'^\[%s\] %d (.*)$' % (agent, n), found[0][3]).group(1)
 
 
-def start_mas(ns, mas2j, output=None, **params):
+def start_mas(ns, mas2j, output=None, cwd=None, **params):
     """Start a rason_mas in namespace ns with ~params; stop it with :func:`stop_mas` or SIGKILL.
 
     :param output: where its stdout and stderr go (e.g. ``subprocess.PIPE``); None: this process's
+    :param cwd: its working directory (None: this process's)
     """
     args = ['rosrun', 'rason_bridge', 'rason_mas', mas2j, '__ns:=/' + ns]
     args += ['_%s:=%s' % (k, v) for k, v in params.items()]
     # rosrun execs the node, so the pid is the node's own (SIGKILL hits the JVM too)
     return subprocess.Popen(args, stdout=output, stderr=subprocess.STDOUT if output else None,
-                            universal_newlines=True)
+                            universal_newlines=True, cwd=cwd)
 
 
 def stop_mas(proc, timeout=20.0):
@@ -181,9 +182,12 @@ class FleetSigner(object):
                             incarnation=int(s.incarnation()), sequence=int(s.sequence()), stamp=int(s.stamp()),
                             key_id=str(s.keyId()), mac=bytes(s.mac()))
 
-    def presence(self, agents, leaving=False, period=0.5):
-        """This node's presence announcing ``agents``, signed (call in publishing order)."""
-        s = self._auth.signPresence(self.mas_id, self._as_list(self._strings(list(agents))), period, leaving)
-        return Presence(mas_id=self.mas_id, incarnation=int(s.incarnation()), agents=list(agents), period=period,
+    def presence(self, agents, leaving=False, period=0.5, df_agents=(), df_services=()):
+        """This node's presence announcing ``agents`` (and the directory registrations df_agents[i]
+        provides df_services[i]), signed (call in publishing order)."""
+        lists = [self._as_list(self._strings(list(x))) for x in (agents, df_agents, df_services)]
+        s = self._auth.signPresence(self.mas_id, lists[0], lists[1], lists[2], period, leaving)
+        return Presence(mas_id=self.mas_id, incarnation=int(s.incarnation()), agents=list(agents),
+                        df_agents=list(df_agents), df_services=list(df_services), period=period,
                         leaving=leaving, sequence=int(s.sequence()), stamp=int(s.stamp()), key_id=str(s.keyId()),
                         mac=bytes(s.mac()))

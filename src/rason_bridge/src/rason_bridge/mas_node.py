@@ -155,6 +155,7 @@ class RasonMasNode(object):
         self._perceive_thread = None
         self._message_item = jpype.JClass(outbound + 'AgentMessage')
         self._stop_item = jpype.JClass(outbound + 'Stop')
+        self._announce_item = jpype.JClass(outbound + 'Announce')
         self._bridge.attach()  # the agents' outbox and log are ours from now on
         threading.Thread(target=self._log_loop, name='rason_log', daemon=True).start()
 
@@ -334,9 +335,9 @@ class RasonMasNode(object):
                                    msg.mas_id, msg.incarnation)
             return
         try:
-            self._bridge.presenceAnnounced(msg.mas_id, msg.incarnation, msg.agents, msg.period, msg.leaving,
-                                           to_int64(msg.sequence), to_int64(msg.stamp), msg.key_id, msg.mac,
-                                           _publisher(msg))
+            self._bridge.presenceAnnounced(msg.mas_id, msg.incarnation, msg.agents, msg.df_agents, msg.df_services,
+                                           msg.period, msg.leaving, to_int64(msg.sequence), to_int64(msg.stamp),
+                                           msg.key_id, msg.mac, _publisher(msg))
         except Exception as e:
             rospy.logerr('could not handle presence of %r: %s', msg.mas_id, e)
 
@@ -369,9 +370,12 @@ class RasonMasNode(object):
         # under _announce_lock: signed in publishing order
         try:
             agents = [str(n) for n in self._bridge.agentNames()]
-            signed = self._bridge.signPresence(agents, self._presence_period, leaving)
+            df = self._bridge.dfAnnounced()
+            df_agents, df_services = [str(a) for a in df.agents()], [str(s) for s in df.services()]
+            signed = self._bridge.signPresence(agents, df_agents, df_services, self._presence_period, leaving)
             self._presence_pub.publish(Presence(
                 mas_id=self.mas_id, incarnation=to_uint64(signed.incarnation()), agents=agents,
+                df_agents=df_agents, df_services=df_services,
                 period=self._presence_period, leaving=leaving, sequence=to_uint64(signed.sequence()),
                 stamp=to_uint64(signed.stamp()), key_id=str(signed.keyId()), mac=bytes(signed.mac())))
         except Exception as e:  # topic closed at shutdown
@@ -420,6 +424,8 @@ class RasonMasNode(object):
                 sender_mas=self.mas_id, sender=str(item.sender()), receiver_mas=str(item.receiverMas()),
                 receiver=str(item.receiver()), performative=str(item.performative()),
                 content=str(item.content()), msg_id=str(item.msgId()), in_reply_to=str(item.inReplyTo())))
+        elif isinstance(item, self._announce_item):
+            self._announce(leaving=False)  # our directory registrations changed: others hear of it now
         elif isinstance(item, self._stop_item):
             self.exit_code = int(item.exitValue())
             # not on this thread: shutting down joins it

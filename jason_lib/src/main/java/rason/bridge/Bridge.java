@@ -6,16 +6,22 @@ import java.util.Collection;
 import java.util.List;
 import java.util.Set;
 import java.util.TreeSet;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 
+import jason.asSemantics.Message;
+import jason.asSyntax.ASSyntax;
+import jason.asSyntax.Atom;
 import jason.asSyntax.Literal;
+import jason.asSyntax.StringTermImpl;
 import jason.infra.local.LocalAgArch;
 
 import rason.RosAgArch;
 import rason.action.ActionEvent;
 import rason.messaging.Fleet;
 import rason.messaging.FleetAuth;
+import rason.messaging.FleetDirectory;
 import rason.messaging.FleetKeys;
 import rason.messaging.Messages;
 import rason.messaging.RateLimitedLog;
@@ -329,13 +335,27 @@ public final class Bridge implements Fleet.Listener {
      */
     public void presenceAnnounced(String mas, long incarnation, String[] names, float period, boolean leaving,
             long sequence, long stamp, String keyId, byte[] mac, String publisher) {
-        fleet.presenceAnnounced(mas, names, leaving, period, new FleetAuth.Signed(incarnation, sequence, stamp, keyId, mac),
-                publisher);
+        presenceAnnounced(mas, incarnation, names, new String[0], new String[0], period, leaving, sequence, stamp, keyId,
+                mac, publisher);
+    }
+
+    /** The same, with the directory registrations it announces (dfAgents[i] provides dfServices[i]). */
+    public void presenceAnnounced(String mas, long incarnation, String[] names, String[] dfAgents, String[] dfServices,
+            float period, boolean leaving, long sequence, long stamp, String keyId, byte[] mac, String publisher) {
+        fleet.presenceAnnounced(mas, names, dfAgents, dfServices, leaving, period,
+                new FleetAuth.Signed(incarnation, sequence, stamp, keyId, mac), publisher);
     }
 
     /** The authentication fields of our next presence announcement; sign in the order of publishing. */
     public FleetAuth.Signed signPresence(String[] agents, float period, boolean leaving) {
-        return fleet.auth().signPresence(fleet.getMasId(), List.of(agents), period, leaving);
+        return signPresence(agents, new String[0], new String[0], period, leaving);
+    }
+
+    /** The same, for an announcement with our directory registrations (see {@link #dfAnnounced}). */
+    public FleetAuth.Signed signPresence(String[] agents, String[] dfAgents, String[] dfServices, float period,
+            boolean leaving) {
+        return fleet.auth().signPresence(fleet.getMasId(), List.of(agents), List.of(dfAgents), List.of(dfServices),
+                period, leaving);
     }
 
     /**
@@ -481,6 +501,67 @@ public final class Bridge implements Fleet.Listener {
         if (!agent.equals(TrustPolicy.EVERY_AGENT) && !agent.matches(Fleet.NAME_PATTERN))
             throw new IllegalArgumentException("'" + InputLimits.abbreviate(agent, 60) + "' is not an agent name or '*'");
         trust.setParameterRule(agent, TrustPolicy.Group.byKey(group), TrustPolicy.Rule.parse(spec));
+    }
+
+    // ---- the directory facilitator (Jason's .df_* through RasonLocalMAS) ------------------
+
+    /** Jason's name for the directory facilitator: subscribers hear from it, as in one MAS. */
+    public static final String DF_NAME = "df";
+
+    private final AtomicBoolean announceQueued = new AtomicBoolean();
+
+    public void dfRegister(String agent, String service) {
+        if (fleet.directory().register(agent, service))
+            announceSoon();
+    }
+
+    public void dfDeregister(String agent, String service) {
+        if (fleet.directory().deregister(agent, service))
+            announceSoon();
+    }
+
+    public void dfSubscribe(String agent, String service) {
+        fleet.directory().subscribe(agent, service);
+    }
+
+    /** The providers of service in the whole fleet, sorted. */
+    public List<String> dfSearch(String service) {
+        return fleet.directory().search(service);
+    }
+
+    /** A hosted agent stopped: its registrations and subscriptions go. */
+    public void dfAgentGone(String agent) {
+        if (fleet.directory().agentGone(agent))
+            announceSoon();
+    }
+
+    /** Our registrations, for the presence the node is about to announce (a later change queues another). */
+    public FleetDirectory.Announced dfAnnounced() {
+        announceQueued.set(false);
+        return fleet.directory().announced();
+    }
+
+    /** Other processes hear of a change of our registrations at once, not at our next periodic announcement. */
+    private void announceSoon() {
+        if (announceQueued.compareAndSet(false, true) && !outbox.offer(new Outbound.Announce()))
+            announceQueued.set(false); // no node yet: its first announcement will have them
+    }
+
+    /**
+     * Tells subscribers what the directory says changed, as Jason's DF does: tell
+     * provider(Agent, "service") from df when one comes, untell when one goes. Only queues
+     * the messages in their mailboxes: each agent takes them on its own thread.
+     */
+    @Override
+    public void providersChanged(List<FleetDirectory.Notice> notices) {
+        var hosted = AgentRegistry.jasonAgents();
+        for (FleetDirectory.Notice n : notices) {
+            LocalAgArch la = hosted.get(n.subscriber());
+            if (la == null)
+                continue;
+            Literal provider = ASSyntax.createLiteral("provider", new Atom(n.provider()), new StringTermImpl(n.service()));
+            la.receiveMsg(new Message(n.added() ? "tell" : "untell", DF_NAME, n.subscriber(), provider));
+        }
     }
 
     // ---- Fleet.Listener ----------------------------------------------------------------

@@ -4,7 +4,8 @@ package rason.bridge;
  * What the agents hand to the rospy node: queued on the agent's thread by
  * {@link Outbox#offer}, published by a thread of the node.
  */
-public sealed interface Outbound permits Outbound.Action, Outbound.Cancel, Outbound.AgentMessage, Outbound.Stop {
+public sealed interface Outbound permits Outbound.Action, Outbound.Cancel, Outbound.AgentMessage, Outbound.Stop,
+        Outbound.Announce {
 
     /** A rason_msgs/Action for jason/action. */
     record Action(String agent, int actionId, String action, String[] parameters) implements Outbound {
@@ -21,5 +22,9 @@ public sealed interface Outbound permits Outbound.Action, Outbound.Cancel, Outbo
 
     /** An agent ran .stopMAS: the node shuts down and exits with this status. */
     record Stop(int exitValue) implements Outbound {
+    }
+
+    /** Our directory registrations changed: announce our presence now rather than at the next period. */
+    record Announce() implements Outbound {
     }
 }

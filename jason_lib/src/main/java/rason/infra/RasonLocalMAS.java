@@ -4,8 +4,10 @@ import java.io.File;
 import java.io.FileInputStream;
 import java.io.InputStream;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.logging.Handler;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -89,18 +91,21 @@ public class RasonLocalMAS extends RunLocalMAS {
         project.setupDefault();
         project.getSourcePaths().setRoot(file.getParent());
         project.registerDirectives();
-        ((Include) DirectiveProcessor.getDirective("include")).setSourcePath(project.getSourcePaths());
+        Include include = (Include) DirectiveProcessor.getDirective("include");
+        include.setSourcePath(project.getSourcePaths());
+        projectInclude().setProject(file.getParentFile(), projectSourcePaths());
 
         for (AgentParameters ap : project.getAgents()) {
             // .asl paths in a .mas2j are relative to the project file, not to the working directory
             String src = ap.getSource() == null ? ap.name + ".asl" : ap.getSource().toString();
             if (src.startsWith("file:"))
                 src = src.substring("file:".length());
-            File asl = new File(src);
-            if (!asl.isAbsolute())
-                asl = new File(file.getParentFile(), src);
-            if (!asl.isFile())
-                throw new JasonException("agent '" + ap.name + "': source file not found: " + asl);
+            // the project's directory, then its aslSourcePath (as Jason does, but never the working directory)
+            List<File> tried = projectInclude().candidates(src, null);
+            File asl = tried.stream().filter(File::isFile).findFirst().orElse(null);
+            if (asl == null)
+                throw new JasonException("agent '" + ap.name + "': source file not found: "
+                        + (tried.size() == 1 ? tried.get(0) : "tried " + tried));
             ap.setSource(asl.getPath());
             if (!ap.getAgArchClasses().contains(ARCH_CLASS))
                 ap.addArchClass(ARCH_CLASS);
@@ -165,6 +170,37 @@ public class RasonLocalMAS extends RunLocalMAS {
         if (!missing.isEmpty())
             throw new JasonException("agent" + (missing.size() > 1 ? "s " : " ") + String.join(", ", missing)
                     + " could not be created (Jason's error is above)");
+        // Jason runs an agent without a file it could not include: here the project does not start
+        List<String> includes = projectInclude().failures();
+        projectInclude().loaded();
+        if (!includes.isEmpty())
+            throw new JasonException(String.join("; ", includes));
+    }
+
+    static {
+        // before Jason makes its own include directive: the parser and .include then use this one
+        DirectiveProcessor.registerDirective("include", ProjectInclude.class);
+    }
+
+    /**
+     * The include directive every agent's parser and {@code .include} use.
+     *
+     * @throws JasonException if Jason made its own before this class was loaded
+     */
+    private static ProjectInclude projectInclude() throws JasonException {
+        if (DirectiveProcessor.getDirective("include") instanceof ProjectInclude p)
+            return p;
+        throw new JasonException("Jason's include directive was created before rason.infra.RasonLocalMAS was loaded:"
+                + " includes would be resolved from the working directory");
+    }
+
+    /** The project's aslSourcePath entries as Jason keeps them (without the working-directory variants it adds). */
+    private static List<String> projectSourcePaths() {
+        List<String> out = new ArrayList<>();
+        for (String p : project.getSourcePaths().getPaths())
+            if (!p.contains("/file:"))
+                out.add(p);
+        return out;
     }
 
     /**
@@ -203,6 +239,41 @@ public class RasonLocalMAS extends RunLocalMAS {
 
     private static String unquote(String s) {
         return s != null && s.length() >= 2 && s.startsWith("\"") && s.endsWith("\"") ? s.substring(1, s.length() - 1) : s;
+    }
+
+    // ---- the directory facilitator: the fleet's (see rason.messaging.FleetDirectory), without a df agent ----
+    // Jason's local DF is an agent called df, created on first use: it would be announced as
+    // one of this robot's agents and clash with every other robot's df.
+
+    @Override
+    public void dfRegister(String agName, String service) {
+        Bridge.get().dfRegister(agName, service);
+    }
+
+    @Override
+    public void dfDeRegister(String agName, String service) {
+        Bridge.get().dfDeregister(agName, service);
+    }
+
+    @Override
+    public Collection<String> dfSearch(String service) {
+        return Bridge.get().dfSearch(service);
+    }
+
+    @Override
+    public void dfSubscribe(String agName, String service) {
+        Bridge.get().dfSubscribe(agName, service);
+    }
+
+    @Override
+    public Map<String, Set<String>> getDF() {
+        return Bridge.get().fleet().directory().byAgent();
+    }
+
+    @Override
+    public LocalAgArch delAg(String agName) {
+        Bridge.get().dfAgentGone(agName);
+        return super.delAg(agName);
     }
 
     @Override

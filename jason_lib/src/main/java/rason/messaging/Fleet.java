@@ -29,6 +29,13 @@ public final class Fleet {
 
         /** This process must not go on (it duplicates an earlier one's agent in the same namespace). */
         void mustStop(String why);
+
+        /**
+         * Subscribers of the directory facilitator must hear of providers that came or went
+         * (called under the directory's lock, in order: only queue them for the agents).
+         */
+        default void providersChanged(List<FleetDirectory.Notice> notices) {
+        }
     }
 
     /** An incoming agent message that passed the checks. */
@@ -44,6 +51,7 @@ public final class Fleet {
     private final WarnOnce warned;
     private final RateLimitedLog limited;
     private final FleetAuth auth;
+    private final FleetDirectory directory;
     private volatile String masId = "";
     private volatile long presenceTimeoutNanos = 2_000_000_000L;
     private volatile long incarnation = 0;
@@ -68,6 +76,13 @@ public final class Fleet {
         this.warned = new WarnOnce(logger);
         this.limited = limited;
         this.auth = auth;
+        // never called under the presence lock: the directory asks the table who owns a name
+        this.directory = new FleetDirectory(this::sendableMasOf, listener::providersChanged);
+    }
+
+    /** The directory facilitator of the whole fleet (our registrations and those others announce). */
+    public FleetDirectory directory() {
+        return directory;
     }
 
     /** The authentication of our traffic and others' (keys, window, off). */
@@ -114,13 +129,25 @@ public final class Fleet {
      */
     public void presenceAnnounced(String mas, String[] names, boolean leaving, float period, FleetAuth.Signed signed,
             String publisher) {
+        presenceAnnounced(mas, names, NONE, NONE, leaving, period, signed, publisher);
+    }
+
+    private static final String[] NONE = new String[0];
+
+    /**
+     * A rason_msgs/Presence with directory registrations (dfAgents[i] provides dfServices[i]):
+     * as above, and the registrations of agents it announces replace what it announced before.
+     */
+    public void presenceAnnounced(String mas, String[] names, String[] dfAgents, String[] dfServices, boolean leaving,
+            float period, FleetAuth.Signed signed, String publisher) {
         if (mas == null || mas.isEmpty()) {
             warned.warn("presence:", "ignored a presence announcement without mas_id");
             return;
         }
         if (mas.equals(masId))
             return;
-        FleetAuth.Refusal refused = auth.verifyPresence(mas, Arrays.asList(names), period, leaving, signed);
+        FleetAuth.Refusal refused = auth.verifyPresence(mas, Arrays.asList(names), Arrays.asList(dfAgents),
+                Arrays.asList(dfServices), period, leaving, signed);
         if (refused == null)
             refused = auth.admit(FleetAuth.Kind.PRESENCE, mas, signed, System.nanoTime(),
                     () -> publishedBy(mas, publisher));
@@ -143,7 +170,14 @@ public final class Fleet {
             c = presence.announced(mas, signed.incarnation(), valid, leaving, System.nanoTime());
         }
         apply(c);
+        if (!leaving && !c.stale)
+            directory.remote(mas, FleetDirectory.valid(valid, dfAgents, dfServices, (entry, why) -> limited.warn(
+                    IGNORED_REGISTRATION, "ignored directory registration '" + InputLimits.abbreviate(entry, 200)
+                            + "' announced by " + InputLimits.abbreviate(mas, 100) + ": " + why, System.nanoTime())));
     }
+
+    /** Kind of the rate-limited lines of directory registrations in a presence that are ignored. */
+    public static final String IGNORED_REGISTRATION = "ignored directory registration";
 
     /**
      * Called every few tens of milliseconds (wall clock) with the ids of the
@@ -285,6 +319,7 @@ public final class Fleet {
     private void apply(PresenceTable.Changes c) {
         if (c.isEmpty())
             return;
+        directory.fleetChanged(c.departed); // who owns which name may have changed too
         for (String e : c.events)
             logger.info("presence: " + e);
         for (String e : c.clashes)

@@ -179,7 +179,14 @@ public final class FleetAuth {
 
     /** The authentication fields of our next presence announcement (in the order of publishing). */
     public Signed signPresence(String masId, List<String> agents, float period, boolean leaving) {
-        return sign(presenceSequence.incrementAndGet(), s -> canonicalPresence(masId, agents, period, leaving, s));
+        return signPresence(masId, agents, List.of(), List.of(), period, leaving);
+    }
+
+    /** Our next presence announcement with directory registrations (dfAgents[i] provides dfServices[i]). */
+    public Signed signPresence(String masId, List<String> agents, List<String> dfAgents, List<String> dfServices,
+            float period, boolean leaving) {
+        return sign(presenceSequence.incrementAndGet(),
+                s -> canonicalPresence(masId, agents, dfAgents, dfServices, period, leaving, s));
     }
 
     private Signed sign(long sequence, Function<Signed, byte[]> canonical) {
@@ -206,9 +213,15 @@ public final class FleetAuth {
 
     /** MAC and clock checks of an incoming presence (no state is changed); null if it passes or auth is off. */
     public Refusal verifyPresence(String masId, List<String> agents, float period, boolean leaving, Signed s) {
+        return verifyPresence(masId, agents, List.of(), List.of(), period, leaving, s);
+    }
+
+    /** The same, for a presence with directory registrations. */
+    public Refusal verifyPresence(String masId, List<String> agents, List<String> dfAgents, List<String> dfServices,
+            float period, boolean leaving, Signed s) {
         if (!required)
             return null;
-        Refusal r = macProblem(s, () -> canonicalPresence(masId, agents, period, leaving, s));
+        Refusal r = macProblem(s, () -> canonicalPresence(masId, agents, dfAgents, dfServices, period, leaving, s));
         return r != null ? r : clockProblem(s);
     }
 
@@ -313,12 +326,12 @@ public final class FleetAuth {
     }
 
     /** The bytes the MAC of a presence covers (s's MAC itself excluded). */
-    public static byte[] canonicalPresence(String masId, List<String> agents, float period, boolean leaving, Signed s) {
+    public static byte[] canonicalPresence(String masId, List<String> agents, List<String> dfAgents,
+            List<String> dfServices, float period, boolean leaving, Signed s) {
         Canonical c = header(Kind.PRESENCE, masId, s);
-        c.int32(agents.size());
-        for (String a : agents)
-            c.string(a);
+        c.strings(agents);
         c.int32(Float.floatToIntBits(period)).int8(leaving ? 1 : 0);
+        c.strings(dfAgents).strings(dfServices);
         return c.bytes();
     }
 
@@ -345,6 +358,14 @@ public final class FleetAuth {
             byte[] b = (s == null ? "" : s).getBytes(StandardCharsets.UTF_8);
             int32(b.length);
             out.write(b, 0, b.length);
+            return this;
+        }
+
+        /** A list: its size (4 bytes), then each string. */
+        Canonical strings(List<String> list) {
+            int32(list.size());
+            for (String s : list)
+                string(s);
             return this;
         }
 

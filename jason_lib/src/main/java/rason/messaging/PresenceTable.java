@@ -37,6 +37,10 @@ public final class PresenceTable {
         public final List<String> clashes = new ArrayList<>();
         /** agents hosted here that another process announces too, with that process's incarnation */
         public final List<LocalClash> localClashes = new ArrayList<>();
+        /** processes that left (or were declared gone) */
+        public final List<String> departed = new ArrayList<>();
+        /** the announcement was of an earlier run of its process, and ignored */
+        public boolean stale = false;
 
         public boolean reachabilityChanged() {
             return !joined.isEmpty() || !left.isEmpty();
@@ -44,7 +48,7 @@ public final class PresenceTable {
 
         public boolean isEmpty() {
             return joined.isEmpty() && left.isEmpty() && lost.isEmpty() && events.isEmpty() && clashes.isEmpty()
-                    && localClashes.isEmpty();
+                    && localClashes.isEmpty() && departed.isEmpty();
         }
     }
 
@@ -92,8 +96,10 @@ public final class PresenceTable {
         Set<String> before = reachable();
         Changes c = new Changes();
         Peer p = peers.get(masId);
-        if (p != null && p.incarnation != 0 && incarnation != 0 && incarnation < p.incarnation)
-            return c; // a late announcement of an earlier run
+        if (p != null && p.incarnation != 0 && incarnation != 0 && incarnation < p.incarnation) {
+            c.stale = true; // a late announcement of an earlier run
+            return c;
+        }
         if (leaving) {
             if (p != null && (p.incarnation == 0 || p.incarnation == incarnation)) {
                 drop(p, "announced it is leaving", c);
@@ -229,6 +235,7 @@ public final class PresenceTable {
 
     private void drop(Peer p, String why, Changes c) {
         peers.remove(p.masId);
+        c.departed.add(p.masId);
         c.lost.addAll(p.agents);
         c.events.add(p.masId + " left: " + why);
         for (String a : p.agents)

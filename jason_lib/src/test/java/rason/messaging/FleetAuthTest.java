@@ -127,6 +127,27 @@ class FleetAuthTest {
     }
 
     @Test
+    void changingADirectoryRegistrationOfAPresenceBreaksItsMac() {
+        List<String> agents = List.of("bob", "dave"), dfAgents = List.of("bob", "dave"), services = List.of("paint", "x");
+        Signed s = sender.signPresence(ROBOT2, agents, dfAgents, services, 0.5f, false);
+        assertNull(receiver.verifyPresence(ROBOT2, agents, dfAgents, services, 0.5f, false, s));
+        assertEquals(Problem.BAD_MAC, problem(receiver.verifyPresence(ROBOT2, agents, 0.5f, false, s)), "dropped");
+        assertEquals(Problem.BAD_MAC, problem(receiver.verifyPresence(ROBOT2, agents, List.of("dave", "bob"), services,
+                0.5f, false, s)), "swapped providers");
+        assertEquals(Problem.BAD_MAC, problem(receiver.verifyPresence(ROBOT2, agents, dfAgents, List.of("paint", "y"),
+                0.5f, false, s)), "another service");
+        assertEquals(Problem.BAD_MAC, problem(receiver.verifyPresence(ROBOT2, agents, List.of("bob", "dave", "bob"),
+                List.of("paint", "x", "z"), 0.5f, false, s)), "one more");
+        assertEquals(Problem.BAD_MAC, problem(receiver.verifyPresence(ROBOT2, agents, List.of("bob"), List.of("paint"),
+                0.5f, false, s)), "one less");
+        // a presence without registrations is not one with an empty registration
+        Signed none = sender.signPresence(ROBOT2, agents, 0.5f, false);
+        assertNull(receiver.verifyPresence(ROBOT2, agents, List.of(), List.of(), 0.5f, false, none));
+        assertEquals(Problem.BAD_MAC, problem(receiver.verifyPresence(ROBOT2, agents, List.of(""), List.of(""), 0.5f,
+                false, none)));
+    }
+
+    @Test
     void fieldsCannotBeShiftedIntoEachOther() {
         // "ab" + "c" and "a" + "bc" must not sign alike: every string carries its length
         WireMessage m1 = new WireMessage(ROBOT2, "ab", "", "c", "tell", "x", "", "");

@@ -36,6 +36,12 @@ final class SigningPeer {
         fleet.presenceAnnounced(mas, agents, leaving, 0.5f, s, mas);
     }
 
+    /** Its next presence with directory registrations (dfAgents[i] provides dfServices[i]), delivered to fleet. */
+    void announce(Fleet fleet, String[] agents, String[] dfAgents, String[] dfServices) {
+        FleetAuth.Signed s = auth.signPresence(mas, List.of(agents), List.of(dfAgents), List.of(dfServices), 0.5f, false);
+        fleet.presenceAnnounced(mas, agents, dfAgents, dfServices, false, 0.5f, s, mas);
+    }
+
     WireMessage message(String sender, String receiver, String performative, String content) {
         return new WireMessage(mas, sender, "", receiver, performative, content, "mid", "");
     }

@@ -1,0 +1,135 @@
+package rason.infra;
+
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import jason.JasonException;
+import jason.asSemantics.Agent;
+import jason.asSemantics.Unifier;
+import jason.asSyntax.ASSyntax;
+
+import rason.bridge.Bridge;
+import rason.bridge.Protocol;
+
+/**
+ * Includes resolve as a project means them, whatever the working directory
+ * (Maven runs these tests in jason_lib/, never in the project's directory):
+ * next to the including file, then the .mas2j's directory, then its source paths.
+ */
+class ProjectIncludeTest {
+
+    @TempDir
+    Path dir;
+
+    private RasonLocalMAS mas;
+
+    @AfterEach
+    void stop() throws Exception {
+        Bridge.get().shutdown(Protocol.SHUTDOWN);
+        if (mas != null)
+            mas.stopAgents(5000);
+        Bridge.get().detach();
+        while (Bridge.get().outbox().poll() != null) {
+            // nothing of this test reaches the next one
+        }
+    }
+
+    private void write(String relative, String text) throws Exception {
+        Path p = dir.resolve(relative);
+        Files.createDirectories(p.getParent());
+        Files.writeString(p, text);
+    }
+
+    private Agent load(String mas2j) throws Exception {
+        write("p.mas2j", mas2j);
+        Bridge.get().attach();
+        mas = new RasonLocalMAS();
+        mas.load(dir.resolve("p.mas2j").toString());
+        mas.create();
+        return mas.getAg("a").getTS().getAg();
+    }
+
+    private static boolean believes(Agent ag, String literal) throws Exception {
+        return ag.believes(ASSyntax.parseLiteral(literal), new Unifier());
+    }
+
+    @Test
+    void theWorkingDirectoryIsNotTheProjects() {
+        assertNotEquals(dir.toAbsolutePath().normalize(), Path.of("").toAbsolutePath().normalize());
+    }
+
+    @Test
+    void aFileNextToTheIncludingOneIsFoundFirst() throws Exception {
+        write("robots/a.asl", "{ include(\"common.asl\") }");
+        write("robots/common.asl", "next_to_it.");
+        write("common.asl", "in_project_dir.");
+        Agent ag = load("MAS p { agents: a ./robots/a.asl; }");
+        assertTrue(believes(ag, "next_to_it"));
+        assertTrue(!believes(ag, "in_project_dir"));
+    }
+
+    @Test
+    void thenTheProjectDirectoryThenItsSourcePaths() throws Exception {
+        write("robots/a.asl", "{ include(\"top.asl\") } { include(\"lib.asl\") } { include(\"sub/deep.asl\") }");
+        write("top.asl", "from_project_dir.");
+        write("src/asl/lib.asl", "from_source_path.");
+        write("src/asl/sub/deep.asl", "{ include(\"sibling.asl\") } from_subdirectory.");
+        write("src/asl/sub/sibling.asl", "included_by_an_included_file.");
+        Agent ag = load("MAS p { agents: a ./robots/a.asl; aslSourcePath: \"src/asl\"; }");
+        for (String b : new String[] { "from_project_dir", "from_source_path", "from_subdirectory",
+                "included_by_an_included_file" })
+            assertTrue(believes(ag, b), b);
+    }
+
+    @Test
+    void anAgentsOwnSourceMayBeInASourcePath() throws Exception {
+        write("src/asl/a.asl", "own_source.");
+        Agent ag = load("MAS p { agents: a; aslSourcePath: \"src/asl\"; }");
+        assertTrue(believes(ag, "own_source"));
+    }
+
+    @Test
+    void anIncludeIntoANamespaceKeepsItsNamespace() throws Exception {
+        write("robots/a.asl", "{ include(\"counter.asl\", cnt) }");
+        write("robots/counter.asl", "value(3).");
+        Agent ag = load("MAS p { agents: a ./robots/a.asl; }");
+        assertTrue(believes(ag, "cnt::value(3)"));
+        assertTrue(!believes(ag, "value(3)"));
+    }
+
+    @Test
+    void theIncludeActionResolvesTheSameWay() throws Exception {
+        write("robots/a.asl", "!load. +!load <- .include(\"later.asl\"); +loaded.");
+        write("robots/later.asl", "from_later.");
+        Agent ag = load("MAS p { agents: a ./robots/a.asl; }");
+        mas.start();
+        long deadline = System.currentTimeMillis() + 10_000;
+        while (!believes(ag, "loaded") && System.currentTimeMillis() < deadline)
+            Thread.sleep(5);
+        assertTrue(believes(ag, "loaded"));
+        assertTrue(believes(ag, "from_later"));
+    }
+
+    @Test
+    void aMissingIncludeStopsTheProjectNamingEveryPathTried() throws Exception {
+        write("robots/a.asl", "{ include(\"nowhere.asl\") } +!g <- true.");
+        write("p.mas2j", "MAS p { agents: a ./robots/a.asl; aslSourcePath: \"lib\"; }");
+        mas = new RasonLocalMAS();
+        Exception e = assertThrows(JasonException.class, () -> {
+            mas.load(dir.resolve("p.mas2j").toString());
+            mas.create();
+        });
+        String real = dir.toRealPath().toString();
+        for (String p : new String[] { "agent 'a'", "'nowhere.asl' not found", real + "/robots/nowhere.asl",
+                real + "/nowhere.asl", real + "/lib/nowhere.asl" })
+            assertTrue(e.getMessage().contains(p), e.getMessage() + " should say " + p);
+    }
+}

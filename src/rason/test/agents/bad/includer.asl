@@ -1,0 +1,3 @@
+{ include("no_such_file.asl") }
+!start.
++!start <- .print("started").
