@@ -31,12 +31,11 @@ _STATUS_NAMES = {getattr(GoalStatus, n): n for n in
 
 
 class _Goal(object):
-    """An actionlib action in flight: its goal handle once sent, and whether it was taken back."""
+    """An actionlib action in flight: its mapping, and its goal handle once sent."""
 
     def __init__(self, mapping):
         self.mapping = mapping
         self.handle = None
-        self.cancelled = False
 
 
 class GenericDecomposer(object):
@@ -88,8 +87,6 @@ class GenericDecomposer(object):
     def _on_cancel(self, action, reason):
         with self._lock:
             goal = self._goals.pop(action, None)
-            if goal is not None:
-                goal.cancelled = True
         if goal is None:
             return     # a topic or a service call: nothing can be stopped any more
         # never while holding our lock: actionlib calls the transition callback inside cancel()
