@@ -6,7 +6,6 @@ no progress (both actuators faulty) aborts, a goal in another frame is rejected.
 import math
 import os
 import sys
-import threading
 import time
 import unittest
 
@@ -15,62 +14,14 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'nodes'))
-from sim_testing import SimRobot, yaw_of  # noqa: E402
+from sim_testing import BaseWatch, SimRobot, relative  # noqa: E402
 from actionlib_msgs.msg import GoalStatus  # noqa: E402
-from geometry_msgs.msg import PoseStamped, Twist  # noqa: E402
 from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal  # noqa: E402
-from nav_msgs.msg import Odometry  # noqa: E402
 from rason_msgs.srv import FaultInjector  # noqa: E402
 
 START = (-1.0, -0.75, 0.0)
 XY_TOLERANCE = 0.05      # the server's default
 ODOMETRY_SLACK = 0.03    # wheel odometry against the true pose over a couple of metres
-
-
-class Watch(object):
-    """The latest odometry pose, the true poses with their sim stamps, cmd_vel_mux."""
-
-    def __init__(self, ns):
-        self._cond = threading.Condition()
-        self.odom = None
-        self.true_poses = []    # (sim time, x, y, yaw)
-        self.commands = []      # (wall time, linear x, angular z)
-        rospy.Subscriber('/%s/odom_filtered' % ns, Odometry, self._on_odom, queue_size=10)
-        rospy.Subscriber('/%s/true_pose' % ns, PoseStamped, self._on_truth, queue_size=100)
-        rospy.Subscriber('/%s/cmd_vel_mux' % ns, Twist, self._on_cmd, queue_size=100)
-
-    def _on_odom(self, msg):
-        p = msg.pose.pose
-        with self._cond:
-            self.odom = (p.position.x, p.position.y, yaw_of(p.orientation))
-
-    def _on_truth(self, msg):
-        with self._cond:
-            self.true_poses.append((msg.header.stamp.to_sec(), msg.pose.position.x, msg.pose.position.y,
-                                    yaw_of(msg.pose.orientation)))
-            del self.true_poses[:-2000]
-            self._cond.notify_all()
-
-    def _on_cmd(self, msg):
-        with self._cond:
-            self.commands.append((time.monotonic(), msg.linear.x, msg.angular.z))
-
-    def wait_sim_time(self, stamp, timeout=20.0):
-        """The true poses stamped from ``stamp`` on, once one stamped at least ``stamp`` came."""
-        deadline = time.monotonic() + timeout
-        with self._cond:
-            while not self.true_poses or self.true_poses[-1][0] < stamp:
-                if time.monotonic() > deadline:
-                    raise AssertionError('no true pose stamped %.2f s' % stamp)
-                self._cond.wait(0.1)
-            return [p for p in self.true_poses if p[0] >= stamp]
-
-
-def relative(pose, forward, left):
-    """The point ``forward`` ahead and ``left`` to the left of ``pose`` (x, y, yaw)."""
-    x, y, yaw = pose
-    return (x + forward * math.cos(yaw) - left * math.sin(yaw),
-            y + forward * math.sin(yaw) + left * math.cos(yaw))
 
 
 def goal(x, y, yaw=None, frame='odom'):
@@ -88,7 +39,7 @@ class TestSimMoveBase(unittest.TestCase):
     def setUpClass(cls):
         rospy.init_node('test_sim_move_base')
         cls.robot = SimRobot('faulty')
-        cls.watch = Watch('faulty')
+        cls.watch = BaseWatch('faulty')
         rospy.wait_for_service('/faulty/inject_fault', timeout=30)
         cls.inject_fault = rospy.ServiceProxy('/faulty/inject_fault', FaultInjector)
         cls.client = actionlib.SimpleActionClient('/faulty/move_base', MoveBaseAction)
@@ -161,11 +112,8 @@ class TestSimMoveBase(unittest.TestCase):
             after = [c for c in self.watch.commands if c[0] >= cancelled_at]
         rospy.loginfo('zero twist %.0f ms after the cancel', (after[0][0] - cancelled_at) * 1e3)
         # once 1.5 s of sim time has passed, the robot has been at rest for the last 0.5 s of it
-        poses = self.watch.wait_sim_time(sim_cancelled + 1.5)
-        self.assertEqual([c[1:] for c in self.watch.commands if c[0] >= cancelled_at], [(0.0, 0.0)])
-        at_rest = [p for p in self.watch.true_poses if p[0] >= sim_cancelled + 1.0]
-        spread = max(math.hypot(p[1] - at_rest[0][1], p[2] - at_rest[0][2]) for p in at_rest)
-        coast = math.hypot(at_rest[0][1] - poses[0][1], at_rest[0][2] - poses[0][2])
+        coast, spread = self.watch.rest_after(sim_cancelled)
+        self.assertEqual(self.watch.commands_since(cancelled_at), [(0.0, 0.0)])
         rospy.loginfo('after the cancel: %.3f m coasting, then %.4f m in 0.5 s', coast, spread)
         self.assertLess(spread, 0.002)
         self.assertLess(coast, 0.05)
