@@ -78,8 +78,7 @@ class TestPatrol(unittest.TestCase):
         reached = [l[3] for l in self.log.lines(r'^\[patrol\] reached ')]
         self.assertEqual([' '.join(r.split()[2:4]) for r in reached], ['1 0', '1 0.8', '0 0.8', '0 0'])
         self.assertTrue(self.log.lines(r'^\[patrol\] patrol complete$'))
-        with self.watch._cond:
-            path = [(p[1], p[2]) for p in self.watch.true_poses]
+        path = self.watch.path()
         for waypoint in WAYPOINTS:
             target = to_world(self.odom, self.truth, waypoint)
             miss = min(math.hypot(x - target[0], y - target[1]) for x, y in path)

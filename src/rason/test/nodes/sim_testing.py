@@ -169,6 +169,11 @@ class BaseWatch(object):
         spread = max(math.hypot(p[1] - at_rest[0][1], p[2] - at_rest[0][2]) for p in at_rest)
         return math.hypot(at_rest[0][1] - poses[0][1], at_rest[0][2] - poses[0][2]), spread
 
+    def path(self):
+        """(x, y) of every true pose heard (the last 400 s of sim time)."""
+        with self._cond:
+            return [(p[1], p[2]) for p in self.true_poses]
+
     def commands_since(self, wall_time):
         """(linear x, angular z) of the cmd_vel_mux twists heard since ``wall_time`` (monotonic)."""
         with self._cond:

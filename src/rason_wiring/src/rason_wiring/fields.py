@@ -14,7 +14,9 @@ _INT_RANGES = {
     'int64': (-2 ** 63, 2 ** 63 - 1), 'uint64': (0, 2 ** 64 - 1),
 }
 _FLOAT_MAX = {'float32': 3.4028234663852886e38, 'float64': float('inf')}
-_SCALARS = set(_INT_RANGES) | set(_FLOAT_MAX) | {'bool', 'string'}
+#: The ROS types of number fields.
+NUMERIC = frozenset(_INT_RANGES) | frozenset(_FLOAT_MAX)
+_SCALARS = set(NUMERIC) | {'bool', 'string'}
 #: ROS types a path may not end at (they would need conversions of their own).
 _UNSUPPORTED = {'time', 'duration'}
 

@@ -32,7 +32,7 @@ from rason_wiring import fields, terms
 from rason_wiring.config import ConfigError, parse_signature
 
 _KEYS = {'topic', 'type', 'source', 'max_rate', 'only_changed', 'refresh', 'literals'}
-_NUMERIC = set(fields._INT_RANGES) | set(fields._FLOAT_MAX)
+_NUMERIC = fields.NUMERIC
 _QUATERNION = 'geometry_msgs/Quaternion'
 _OPS = {'eq': operator.eq, 'ne': operator.ne, 'lt': operator.lt, 'le': operator.le,
         'gt': operator.gt, 'ge': operator.ge}
