@@ -5,7 +5,8 @@ import threading
 import time
 
 import rospy
-from geometry_msgs.msg import Pose2D, PoseStamped
+from geometry_msgs.msg import Pose2D, PoseStamped, Twist
+from nav_msgs.msg import Odometry
 from rason_msgs.msg import Action, Event
 
 # Where the simulator mounts the Kinect on the helper (rason_sim world.h CameraConfig).
@@ -118,3 +119,69 @@ class SimRobot(object):
             while action_id not in self._results and time.monotonic() < deadline:
                 self._lock.wait(0.1)
             return self._results.get(action_id)
+
+
+class BaseWatch(object):
+    """The latest odometry pose, the true poses with their sim stamps, cmd_vel_mux."""
+
+    def __init__(self, ns):
+        self._cond = threading.Condition()
+        self.odom = None
+        self.true_poses = []    # (sim time, x, y, yaw)
+        self.commands = []      # (wall time, linear x, angular z)
+        rospy.Subscriber('/%s/odom_filtered' % ns, Odometry, self._on_odom, queue_size=10)
+        rospy.Subscriber('/%s/true_pose' % ns, PoseStamped, self._on_truth, queue_size=100)
+        rospy.Subscriber('/%s/cmd_vel_mux' % ns, Twist, self._on_cmd, queue_size=100)
+
+    def _on_odom(self, msg):
+        p = msg.pose.pose
+        with self._cond:
+            self.odom = (p.position.x, p.position.y, yaw_of(p.orientation))
+
+    def _on_truth(self, msg):
+        with self._cond:
+            self.true_poses.append((msg.header.stamp.to_sec(), msg.pose.position.x, msg.pose.position.y,
+                                    yaw_of(msg.pose.orientation)))
+            del self.true_poses[:-20000]    # 400 s of sim time at 50 Hz
+            self._cond.notify_all()
+
+    def _on_cmd(self, msg):
+        with self._cond:
+            self.commands.append((time.monotonic(), msg.linear.x, msg.angular.z))
+
+    def wait_sim_time(self, stamp, timeout=20.0):
+        """Wait for a true pose stamped ``stamp`` or later; returns those stamped from ``stamp`` on."""
+        deadline = time.monotonic() + timeout
+        with self._cond:
+            while not self.true_poses or self.true_poses[-1][0] < stamp:
+                if time.monotonic() > deadline:
+                    raise AssertionError('no true pose stamped %.2f s' % stamp)
+                self._cond.wait(0.1)
+            return [p for p in self.true_poses if p[0] >= stamp]
+
+    def rest_after(self, stamp):
+        """Once 1.5 s of sim time has passed since ``stamp``: (metres moved from ``stamp`` until
+        1 s after it, metres moved in the 0.5 s after that) by the true pose."""
+        self.wait_sim_time(stamp + 1.5)
+        with self._cond:
+            poses = [p for p in self.true_poses if stamp <= p[0] <= stamp + 1.5]
+        at_rest = [p for p in poses if p[0] >= stamp + 1.0]
+        spread = max(math.hypot(p[1] - at_rest[0][1], p[2] - at_rest[0][2]) for p in at_rest)
+        return math.hypot(at_rest[0][1] - poses[0][1], at_rest[0][2] - poses[0][2]), spread
+
+    def path(self):
+        """(x, y) of every true pose heard (the last 400 s of sim time)."""
+        with self._cond:
+            return [(p[1], p[2]) for p in self.true_poses]
+
+    def commands_since(self, wall_time):
+        """(linear x, angular z) of the cmd_vel_mux twists heard since ``wall_time`` (monotonic)."""
+        with self._cond:
+            return [c[1:] for c in self.commands if c[0] >= wall_time]
+
+
+def relative(pose, forward, left):
+    """The point ``forward`` ahead and ``left`` to the left of ``pose`` (x, y, yaw)."""
+    x, y, yaw = pose
+    return (x + forward * math.cos(yaw) - left * math.sin(yaw),
+            y + forward * math.sin(yaw) + left * math.cos(yaw))

@@ -164,15 +164,18 @@ def _fail(entry, what, *args):
     raise ConfigError('%s: %s' % (entry, what % args if args else what))
 
 
-def parse_signature(entry):
+def parse_signature(entry, what='an action signature such as goto(X, Y)'):
     """``'goto(X, Y)'`` -> ``('goto', ['X', 'Y'])``.
+
+    :param what: what ``entry`` should have been, for the error (the synthesizer's literals
+        are written the same way)
 
     :raises ConfigError: a functor that is not a Jason atom, an argument name that is not a
         Jason variable, or a name used twice
     """
     m = _SIGNATURE.match(entry) if isinstance(entry, str) else None
     if m is None:
-        _fail(entry, 'not an action signature such as goto(X, Y)')
+        _fail(entry, 'not %s', what)
     functor, body = m.group(1), m.group(2)
     if not terms.is_atom(functor):
         _fail(entry, 'functor %r is not a Jason atom (a lower-case letter, then letters, digits, _)',

@@ -14,7 +14,9 @@ _INT_RANGES = {
     'int64': (-2 ** 63, 2 ** 63 - 1), 'uint64': (0, 2 ** 64 - 1),
 }
 _FLOAT_MAX = {'float32': 3.4028234663852886e38, 'float64': float('inf')}
-_SCALARS = set(_INT_RANGES) | set(_FLOAT_MAX) | {'bool', 'string'}
+#: The ROS types of number fields.
+NUMERIC = frozenset(_INT_RANGES) | frozenset(_FLOAT_MAX)
+_SCALARS = set(NUMERIC) | {'bool', 'string'}
 #: ROS types a path may not end at (they would need conversions of their own).
 _UNSUPPORTED = {'time', 'duration'}
 
@@ -44,11 +46,15 @@ def _is_message(field_type):
     return base not in _SCALARS and base not in _UNSUPPORTED
 
 
-def field_type(msg_class, path):
+def field_type(msg_class, path, messages=False):
     """The ROS type of the field at ``path`` (``target_pose.pose.position.x`` -> ``float64``).
 
+    :param messages: True: a path may end at a (non-array) message, whose type is returned
+        (``pose.pose.orientation`` -> ``geometry_msgs/Quaternion``): what a conversion such
+        as the synthesizer's ``yaw`` reads
     :raises BadPath: a part the message does not have, a part inside a non-message, or a
-        path ending at a message, an array of messages, a time or a duration
+        path ending at a message (unless ``messages``), an array of messages, a time or a
+        duration
     """
     cls, parts = msg_class, path.split('.')
     for i, part in enumerate(parts):
@@ -70,6 +76,8 @@ def field_type(msg_class, path):
             if array is not False:
                 raise BadPath('%s is an array of messages (%s): not supported' % (path, ftype))
             sub = getattr(cls(), part)
+            if messages:
+                return sub._type
             raise BadPath('%s is a message (%s): name one of its fields (%s)'
                           % (path, ftype, ', '.join(sub.__slots__)))
         return ftype
