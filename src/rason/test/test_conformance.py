@@ -22,6 +22,7 @@ PROGRAMS = [
     'auction',    # a sealed-bid auction: broadcast, bids, the winner told to all
     'howto',      # plans asked for (askHow) and taught (tellHow), then used
     'spawn',      # agents created at run time, found through the directory, killed
+    'modules',    # one module included twice, in two namespaces, used through them
 ]
 
 HERE = os.path.dirname(os.path.abspath(__file__))
