@@ -369,8 +369,10 @@ class RasonMasNode(object):
     def _publish_presence(self, leaving):
         # under _announce_lock: signed in publishing order
         try:
-            agents = [str(n) for n in self._bridge.agentNames()]
+            # dfAnnounced first: it clears the "announce at once" flag, so an agent or registration
+            # changing after it queues another announcement instead of going unannounced
             df = self._bridge.dfAnnounced()
+            agents = [str(n) for n in self._bridge.agentNames()]
             df_agents, df_services = [str(a) for a in df.agents()], [str(s) for s in df.services()]
             signed = self._bridge.signPresence(agents, df_agents, df_services, self._presence_period, leaving)
             self._presence_pub.publish(Presence(
@@ -425,7 +427,7 @@ class RasonMasNode(object):
                 receiver=str(item.receiver()), performative=str(item.performative()),
                 content=str(item.content()), msg_id=str(item.msgId()), in_reply_to=str(item.inReplyTo())))
         elif isinstance(item, self._announce_item):
-            self._announce(leaving=False)  # our directory registrations changed: others hear of it now
+            self._announce(leaving=False)  # our agents or their registrations changed: others hear of it now
         elif isinstance(item, self._stop_item):
             self.exit_code = int(item.exitValue())
             # not on this thread: shutting down joins it

@@ -12,6 +12,8 @@
 +cmd(Id, C) <- !run(Id, C).
 
 +!run(Id, send(To, P, C)) <- .send(To, P, C); .print(Id, " sent").
+// a variable matches literals of the default namespace only: NS::C takes the others (inv::item(1))
++!run(Id, send(To, P, NS::C)) <- .send(To, P, NS::C); .print(Id, " sent").
 // percepts are ground, so the test names the functor and the query gets a variable: ask(bob, askOne, secret)
 +!run(Id, ask(To, P, F)) <- Q =.. [F, [_], []]; .send(To, P, Q, A); .print(Id, " answer ", A).
 +!run(Id, ask(To, P, F, Timeout)) <- Q =.. [F, [_], []]; .send(To, P, Q, A, Timeout); .print(Id, " answer ", A).
@@ -23,6 +25,13 @@
 +!run(Id, pingpong(To, N)) <- .nano_time(T0); -+pingpong(Id, To, N, N, T0); .send(To, achieve, ping).
 +!run(Id, perceive_only(L)) <- rason.perceive_only(L); .print(Id, " perceiving only ", L).
 +!run(Id, perceive_all) <- rason.perceive_all; .print(Id, " perceiving all").
+// a namespaced query: ask_ns(bob, inv, item) asks bob askOne inv::item(_)
++!run(Id, ask_ns(To, NS, F)) <- NS::Q =.. [NS, F, [_], []]; .send(To, askOne, NS::Q, AN::A); .print(Id, " answer ", AN::A).
+// percepts are ground: believes_any(alarm) asks whether some alarm(_) is believed
++!run(Id, believes_any(F)) : Q =.. [F, [_], []] & Q <- .print(Id, " believes ", Q).
++!run(Id, believes_any(F)) <- .print(Id, " believes no ", F).
++!run(Id, create(N, Src)) <- .create_agent(N, Src); .print(Id, " created ", N).
++!run(Id, kill(N)) <- .kill_agent(N); .print(Id, " killed ", N).
 
 -!run(Id, _)[error(E), error_msg(M)] <- .print(Id, " failed ", E, ": ", M).
 
@@ -30,6 +39,13 @@
 +hello(X)[source(S)] <- .print("told hello(", X, ") by ", S).
 -hello(X)[source(S)] <- .print("untold hello(", X, ") by ", S).
 +!greet(X)[source(S)] <- .print("asked to greet ", X, " by ", S).
+// namespaced content: inv::item and ::item (the default namespace) are different beliefs
++inv::item(X)[source(S)] <- .print("told inv::item(", X, ") by ", S).
++item(X)[source(S)] <- .print("told ::item(", X, ") by ", S).
+// a signal is an event only: nothing is believed
++alarm(X)[source(S)] <- .print("signalled alarm(", X, ") by ", S).
++herald::news(X)[source(S)] <- .print("herald::news ", X, " from ", S).
++bulletin(X)[source(S)] <- .print("bulletin ", X, " from ", S).
 +!linger[source(S)] <- .print("lingering for ", S); .wait(60000); .print("lingered").
 
 // achieve round trips: the other agent answers ping with pong; N rounds, then the mean

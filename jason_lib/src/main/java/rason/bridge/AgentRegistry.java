@@ -52,6 +52,11 @@ public final class AgentRegistry {
         agentPrefix = prefix == null ? "" : prefix;
     }
 
+    /** name as this robot names its agents (with its prefix): agents made by .create_agent too. */
+    public String prefixed(String name) {
+        return agentPrefix + name;
+    }
+
     /** The hosted agent called name, or prefix+name (so a program reaches its own robot's agents by their short names); null if neither. */
     public String localNameFor(String name) {
         Map<String, LocalAgArch> jason = jasonAgents();

@@ -147,6 +147,7 @@ public final class Bridge implements Fleet.Listener {
         shutdownReason = null;
         sources.clear();
         limited.endAll(System.nanoTime());
+        announceQueued.set(false); // an earlier node's queued announcement went with its outbox
         outbox.open();
         attached = true;
     }
@@ -180,16 +181,20 @@ public final class Bridge implements Fleet.Listener {
 
     // ---- agents ------------------------------------------------------------------------
 
+    /** An agent starts (from the project or .create_agent): the other robots hear of it at once. */
     public void register(RosAgArch arch) {
         registry.add(arch);
         fleet.localAgentsChanged(registry.names());
         reachableChanged();
+        announceSoon();
     }
 
+    /** An agent stops (.kill_agent, or the node stops): the other robots hear of its departure at once. */
     public void unregister(RosAgArch arch) {
         if (registry.remove(arch)) {
             fleet.localAgentsChanged(registry.names());
             reachableChanged();
+            announceSoon();
         }
     }
 
@@ -541,7 +546,10 @@ public final class Bridge implements Fleet.Listener {
         return fleet.directory().announced();
     }
 
-    /** Other processes hear of a change of our registrations at once, not at our next periodic announcement. */
+    /**
+     * Other processes hear of a change of our agents or their registrations at once, not at our
+     * next periodic announcement (one announcement for changes queued before the node takes it).
+     */
     private void announceSoon() {
         if (announceQueued.compareAndSet(false, true) && !outbox.offer(new Outbound.Announce()))
             announceQueued.set(false); // no node yet: its first announcement will have them

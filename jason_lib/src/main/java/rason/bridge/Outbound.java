@@ -24,7 +24,7 @@ public sealed interface Outbound permits Outbound.Action, Outbound.Cancel, Outbo
     record Stop(int exitValue) implements Outbound {
     }
 
-    /** Our directory registrations changed: announce our presence now rather than at the next period. */
+    /** Our agents (.create_agent, .kill_agent) or their directory registrations changed: announce now, not at the next period. */
     record Announce() implements Outbound {
     }
 }

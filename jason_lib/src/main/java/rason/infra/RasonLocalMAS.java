@@ -187,11 +187,16 @@ public class RasonLocalMAS extends RunLocalMAS {
      *
      * @throws JasonException if Jason made its own before this class was loaded
      */
-    private static ProjectInclude projectInclude() throws JasonException {
+    static ProjectInclude projectInclude() throws JasonException {
         if (DirectiveProcessor.getDirective("include") instanceof ProjectInclude p)
             return p;
         throw new JasonException("Jason's include directive was created before rason.infra.RasonLocalMAS was loaded:"
                 + " includes would be resolved from the working directory");
+    }
+
+    /** Whether includes (and .create_agent's sources) are resolved from the project. */
+    static boolean hasProjectInclude() {
+        return DirectiveProcessor.getDirective("include") instanceof ProjectInclude;
     }
 
     /** The project's aslSourcePath entries as Jason keeps them (without the working-directory variants it adds). */

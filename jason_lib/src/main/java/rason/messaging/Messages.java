@@ -1,9 +1,13 @@
 package rason.messaging;
 
+import java.security.SecureRandom;
+import java.util.regex.Pattern;
+
 import jason.asSemantics.Message;
 import jason.asSyntax.ASSyntax;
 import jason.asSyntax.ListTerm;
 import jason.asSyntax.ListTermImpl;
+import jason.asSyntax.Plan;
 import jason.asSyntax.Pred;
 import jason.asSyntax.StringTerm;
 import jason.asSyntax.StringTermImpl;
@@ -31,8 +35,8 @@ public final class Messages {
      * value between quotes as it is, so "say \"hi\"" would not parse back.
      */
     static Term escapeStrings(Term t) {
-        if (t instanceof jason.asSyntax.Plan)
-            return t; // a plan (an askHow's answer) prints its own text, and Jason cannot set its terms
+        if (t instanceof Plan p) // a plan (an askHow's answer) prints its own text, and Jason cannot set its terms
+            return withProcessLabel(p);
         if (t.isString()) {
             String v = ((StringTerm) t).getString();
             String e = escape(v);
@@ -53,6 +57,30 @@ public final class Messages {
             return copy;
         }
         return t;
+    }
+
+    /** Jason's label for a plan written without one: p__ and a counter of the process. */
+    private static final Pattern GENERATED_LABEL = Pattern.compile("p__\\d+");
+    /** Tags this process's generated labels when they leave it (letters and digits, as an atom allows). */
+    static final String PROCESS_TAG = Long.toString(new SecureRandom().nextLong() & Long.MAX_VALUE, 36);
+
+    /**
+     * Jason labels plans written without a label p__1, p__2, ... with one counter per
+     * process, so in one MAS no two plans share a generated label; another process has
+     * its own p__3, and adding a plan under a label the agent already has fails. A
+     * generated label leaves with this process's tag (p__3_k2x9...), so it stays unique
+     * in the receiver as it would in one MAS; its annotations (source, url) are kept.
+     */
+    static Plan withProcessLabel(Plan p) {
+        Pred label = p.getLabel();
+        if (label == null || !GENERATED_LABEL.matcher(label.getFunctor()).matches())
+            return p;
+        Plan copy = (Plan) p.clone();
+        Pred tagged = new Pred(label.getFunctor() + "_" + PROCESS_TAG);
+        if (label.hasAnnot())
+            tagged.setAnnots(label.getAnnots().cloneLT());
+        copy.setLabel(tagged);
+        return copy;
     }
 
     // Jason's parser turns \" and \n back into a quote and a newline and keeps

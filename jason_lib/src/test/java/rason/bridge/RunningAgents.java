@@ -37,6 +37,9 @@ final class RunningAgents {
         mas = new RasonLocalMAS();
         mas.load(dir.resolve("test.mas2j").toString());
         mas.create();
+        while (bridge.outbox().poll() != null) {
+            // the announcement of the new agent: the tests look at what the agent queues
+        }
         mas.start();
         RosAgArch arch = bridge.registry().get(agent);
         assertNotNull(arch, "agent " + agent + " registered");

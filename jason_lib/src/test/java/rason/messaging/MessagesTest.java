@@ -88,6 +88,21 @@ class MessagesTest {
     }
 
     @Test
+    void aGeneratedPlanLabelLeavesWithTheProcessTagAndAWrittenOneAsItIs() throws Exception {
+        jason.asSyntax.Plan generated = ASSyntax.parsePlan("@p__3[source(teacher)] +!greet(X) <- .print(X).");
+        jason.asSyntax.Plan written = ASSyntax.parsePlan("@wave[source(teacher)] +!wave <- .print(hi).");
+        generated.setAsPlanTerm(true); // as in an askHow's answer: { @label ... }
+        written.setAsPlanTerm(true);
+        Message m = new Message("tellHow", "teacher", "pupil", ASSyntax.createList(generated, written));
+        Term back = Messages.parseContent(Messages.contentText(m));
+        String text = back.toString();
+        assertTrue(text.contains("@p__3_" + Messages.PROCESS_TAG + "[source(teacher)]"), text);
+        assertTrue(text.contains("@wave[source(teacher)]"), text);
+        assertFalse(text.contains("@p__3["), "another process has its own p__3: " + text);
+        assertTrue(Messages.PROCESS_TAG.matches("[a-z0-9]+"), Messages.PROCESS_TAG);
+    }
+
+    @Test
     void sendingLeavesTheMessageContentAsItWas() {
         Term sent = ASSyntax.createLiteral("said", ASSyntax.createString("a \"b\""),
                 ASSyntax.createList(ASSyntax.createString("c\nd"))).addAnnots(
