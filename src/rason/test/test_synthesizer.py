@@ -6,7 +6,6 @@ limit, only-when-changed and the refresh, read on jason/perception; malformed co
 (the node exits 1 with one fatal line naming the entry)."""
 import math
 import os
-import subprocess
 import sys
 import threading
 import time
@@ -16,7 +15,7 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'nodes'))
-from rason_testing import LogWatcher, wait_for_subscribers  # noqa: E402
+from rason_testing import LogWatcher, run_refused_node, wait_for_subscribers  # noqa: E402
 from nav_msgs.msg import Odometry  # noqa: E402
 from rason_msgs.msg import Perception  # noqa: E402
 from sensor_msgs.msg import BatteryState  # noqa: E402
@@ -146,13 +145,8 @@ class TestSynthesizer(unittest.TestCase):
     # ---------------------------------------------------------------- malformed configurations
 
     def refused(self, name, perceptions):
-        rospy.set_param('/%s/%s/perceptions' % (NS, name), perceptions)
-        proc = subprocess.Popen(['rosrun', 'rason_wiring', 'generic_synthesizer', '__ns:=/' + NS,
-                                 '__name:=' + name], stdout=subprocess.PIPE,
-                                stderr=subprocess.STDOUT, universal_newlines=True)
-        out, _ = proc.communicate(timeout=60)
-        self.assertEqual(proc.returncode, 1, out)
-        fatal = [l for l in out.splitlines() if l.startswith('[FATAL]')]
+        code, fatal, out = run_refused_node('rason_wiring', 'generic_synthesizer', NS, name, 'perceptions', perceptions)
+        self.assertEqual(code, 1, out)
         self.assertEqual(len(fatal), 1, out)
         return fatal[0]
 

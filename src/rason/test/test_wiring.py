@@ -6,7 +6,6 @@ raises, a slow one that holds up nothing), an actionlib server (success, abort, 
 feedback as perceptions, the cancel of a goal taken back, a missing server), and malformed
 configurations (the node exits 1 with one fatal line naming the entry)."""
 import os
-import subprocess
 import sys
 import threading
 import time
@@ -17,7 +16,7 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'nodes'))
-from rason_testing import LogWatcher, Robot, run  # noqa: E402
+from rason_testing import LogWatcher, Robot, run, run_refused_node  # noqa: E402
 from move_base_msgs.msg import MoveBaseAction, MoveBaseFeedback  # noqa: E402
 from std_msgs.msg import String  # noqa: E402
 from std_srvs.srv import SetBool, SetBoolResponse, Trigger, TriggerResponse  # noqa: E402
@@ -198,13 +197,8 @@ class TestWiring(unittest.TestCase):
     # ---------------------------------------------------------------- malformed configurations
 
     def refused(self, name, actions):
-        rospy.set_param('/%s/%s/actions' % (NS, name), actions)
-        proc = subprocess.Popen(['rosrun', 'rason_wiring', 'generic_decomposer', '__ns:=/' + NS,
-                                 '__name:=' + name], stdout=subprocess.PIPE,
-                                stderr=subprocess.STDOUT, universal_newlines=True)
-        out, _ = proc.communicate(timeout=60)
-        self.assertEqual(proc.returncode, 1, out)
-        fatal = [l for l in out.splitlines() if l.startswith('[FATAL]')]
+        code, fatal, out = run_refused_node('rason_wiring', 'generic_decomposer', NS, name, 'actions', actions)
+        self.assertEqual(code, 1, out)
         self.assertEqual(len(fatal), 1, out)
         return fatal[0]
 

@@ -128,6 +128,16 @@ def run(log, robot, agent, text, expect, timeout=15.0):
     return re.search(r'^\[%s\] %d (.*)$' % (agent, n), found[0][3]).group(1)
 
 
+def run_refused_node(package, node, ns, name, param, value, timeout=60.0):
+    """Runs a node whose ~param is value and that must refuse it: returns (exit status,
+    its [FATAL] lines, all its output)."""
+    rospy.set_param('/%s/%s/%s' % (ns, name, param), value)
+    proc = subprocess.Popen(['rosrun', package, node, '__ns:=/' + ns, '__name:=' + name],
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+    out, _ = proc.communicate(timeout=timeout)
+    return proc.returncode, [line for line in out.splitlines() if line.startswith('[FATAL]')], out
+
+
 def start_mas(ns, mas2j, output=None, cwd=None, **params):
     """Start a rason_mas in namespace ns with ~params; stop it with :func:`stop_mas` or SIGKILL.
 

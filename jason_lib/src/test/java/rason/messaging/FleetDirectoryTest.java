@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
-import java.util.Collection;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -159,26 +158,8 @@ class FleetDirectoryTest {
     private final Logger logger = Logger.getLogger("test.fleet.directory");
 
     private Fleet fleet() {
-        FleetAuth auth = new FleetAuth();
-        auth.require(SigningPeer.keys(SigningPeer.KEY_A));
-        Fleet f = new Fleet(logger, new Fleet.Listener() {
-            @Override
-            public void reachableChanged() {
-            }
-
-            @Override
-            public void receiversLost(Collection<String> names) {
-            }
-
-            @Override
-            public void mustStop(String why) {
-            }
-
-            @Override
-            public void providersChanged(List<Notice> notices) {
-                fleetHeard.addAll(notices);
-            }
-        }, new RateLimitedLog(logger), auth);
+        Fleet f = new Fleet(logger, SigningPeer.recording(new ArrayList<>(), fleetHeard), new RateLimitedLog(logger),
+                SigningPeer.authWithKeyA());
         f.setMasId("/robot1/rason_mas");
         f.setIncarnation(System.currentTimeMillis() * 1_000_000L - 1_000_000_000L);
         f.localAgentsChanged(Set.of("boss"));

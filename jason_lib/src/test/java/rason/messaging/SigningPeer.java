@@ -69,6 +69,11 @@ final class SigningPeer {
 
     /** A fleet listener that keeps the reasons it is told to stop in stops and ignores the rest. */
     static Fleet.Listener stopsInto(List<String> stops) {
+        return recording(stops, new ArrayList<>());
+    }
+
+    /** A fleet listener that keeps the stop reasons and the directory's notices it is told. */
+    static Fleet.Listener recording(List<String> stops, List<FleetDirectory.Notice> notices) {
         return new Fleet.Listener() {
             @Override
             public void reachableChanged() {
@@ -81,6 +86,11 @@ final class SigningPeer {
             @Override
             public void mustStop(String why) {
                 stops.add(why);
+            }
+
+            @Override
+            public void providersChanged(List<FleetDirectory.Notice> heard) {
+                notices.addAll(heard);
             }
         };
     }
