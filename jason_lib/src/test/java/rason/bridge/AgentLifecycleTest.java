@@ -19,8 +19,6 @@ import jason.asSemantics.Unifier;
 import jason.asSyntax.ASSyntax;
 import jason.asSyntax.Literal;
 import rason.infra.RasonLocalMAS;
-import rason.messaging.FleetAuth;
-import rason.messaging.FleetKeys;
 
 /**
  * Agents created and killed while the robot runs: .create_agent names the agent
@@ -35,7 +33,7 @@ class AgentLifecycleTest {
     private static final String OTHER_MAS = "/robot8/rason_mas";
 
     private final Bridge bridge = Bridge.get();
-    private final FleetAuth otherRobot = new FleetAuth();
+    private OtherRobot otherRobot;
     private RasonLocalMAS mas;
 
     @TempDir
@@ -43,7 +41,8 @@ class AgentLifecycleTest {
 
     @AfterEach
     void stop() throws Exception {
-        announceOtherRobot(true);
+        if (otherRobot != null)
+            announceOtherRobot(true);
         bridge.shutdown(Protocol.SHUTDOWN);
         if (mas != null)
             mas.stopAgents(5000);
@@ -56,19 +55,14 @@ class AgentLifecycleTest {
 
     /** robot8 hosts far_worker (and r1_helper, a name this robot's program would make). */
     private void announceOtherRobot(boolean leaving) {
-        String[] names = { "far_worker", "r1_helper" };
-        FleetAuth.Signed p = otherRobot.signPresence(OTHER_MAS, List.of(names), List.of(), List.of(), 0.5f, leaving);
-        bridge.presenceAnnounced(OTHER_MAS, p.incarnation(), names, new String[0], new String[0], 0.5f, leaving,
-                p.sequence(), p.stamp(), p.keyId(), p.mac(), OTHER_MAS);
+        otherRobot.announce(new String[] { "far_worker", "r1_helper" }, leaving);
         bridge.presenceTick(new String[] { OTHER_MAS });
     }
 
     /** Runs boss (program) with helper.asl in lib/ (an aslSourcePath), prefix r1_, robot8 present. */
     private void start(String boss) throws Exception {
         bridge.setMasId("/robot1/rason_mas");
-        bridge.requireFleetKeyText(KEY, "test");
-        otherRobot.require(FleetKeys.parse(KEY, "test"));
-        otherRobot.setIncarnation(System.currentTimeMillis() * 1_000_000L);
+        otherRobot = new OtherRobot(bridge, OTHER_MAS, KEY);
         Files.createDirectories(dir.resolve("lib"));
         Files.writeString(dir.resolve("lib/helper.asl"), "!start. +!start <- .df_register(\"helping\"); +started.");
         Files.writeString(dir.resolve("boss.asl"), boss);

@@ -18,8 +18,6 @@ import jason.asSemantics.Agent;
 import jason.asSemantics.Unifier;
 import jason.asSyntax.ASSyntax;
 import rason.infra.RasonLocalMAS;
-import rason.messaging.FleetAuth;
-import rason.messaging.FleetKeys;
 
 /**
  * Real agents using Jason's .df_* actions: the directory facilitator runs
@@ -33,7 +31,7 @@ class DirectoryAgentsTest {
     private static final String OTHER_MAS = "/robot7/rason_mas";
 
     private final Bridge bridge = Bridge.get();
-    private final FleetAuth otherRobot = new FleetAuth();
+    private OtherRobot otherRobot;
     private RasonLocalMAS mas;
 
     @TempDir
@@ -51,11 +49,7 @@ class DirectoryAgentsTest {
     }
 
     private void announceOtherRobot(boolean leaving, String[] dfAgents, String[] dfServices) {
-        String[] names = { "far_painter" };
-        FleetAuth.Signed p = otherRobot.signPresence(OTHER_MAS, List.of(names), List.of(dfAgents), List.of(dfServices),
-                0.5f, leaving);
-        bridge.presenceAnnounced(OTHER_MAS, p.incarnation(), names, dfAgents, dfServices, 0.5f, leaving, p.sequence(),
-                p.stamp(), p.keyId(), p.mac(), OTHER_MAS);
+        otherRobot.announce(new String[] { "far_painter" }, dfAgents, dfServices, leaving);
     }
 
     private Agent agent(String name) {
@@ -73,9 +67,7 @@ class DirectoryAgentsTest {
     @Test
     void theFleetsRegistrationsReachSearchAndSubscribersWithoutADfAgent() throws Exception {
         bridge.setMasId("/robot6/rason_mas");
-        bridge.requireFleetKeyText(KEY, "test");
-        otherRobot.require(FleetKeys.parse(KEY, "test"));
-        otherRobot.setIncarnation(System.currentTimeMillis() * 1_000_000L);
+        otherRobot = new OtherRobot(bridge, OTHER_MAS, KEY);
         Files.writeString(dir.resolve("painter.asl"), "!start. +!start <- .df_register(\"paint_svc\").");
         Files.writeString(dir.resolve("boss.asl"), """
                 !start.

@@ -7,7 +7,6 @@ import static rason.bridge.RunningAgents.await;
 import static rason.bridge.RunningAgents.believes;
 
 import java.nio.file.Path;
-import java.util.List;
 
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -16,10 +15,7 @@ import org.junit.jupiter.api.io.TempDir;
 import jason.asSyntax.ASSyntax;
 import jason.asSyntax.Trigger;
 import rason.RosAgArch;
-import rason.messaging.FleetAuth;
-import rason.messaging.FleetKeys;
 import rason.messaging.TrustPolicy;
-import rason.messaging.WireMessage;
 
 /**
  * Messages from agents of another process pass the receiver's trust policy:
@@ -47,27 +43,17 @@ class TrustedMessagesTest {
     private static final String KEY = "test-trust-key-0123456789abcdef0123456789abcdef";
 
     /** robot2's rason_mas: signs what it sends with the fleet key. */
-    private final FleetAuth otherRobot = new FleetAuth();
+    private OtherRobot otherRobot;
 
     private RosAgArch start(String agent, String program) throws Exception {
         bridge.setMasId("/robot1/rason_mas");
-        bridge.requireFleetKeyText(KEY, "test");
-        otherRobot.require(FleetKeys.parse(KEY, "test"));
-        otherRobot.setIncarnation(System.nanoTime());
-        String[] names = { "carol", "mallory" };
-        FleetAuth.Signed p = otherRobot.signPresence(OTHER_MAS, List.of(names), 0.5f, false);
-        bridge.presenceAnnounced(OTHER_MAS, p.incarnation(), names, 0.5f, false, p.sequence(), p.stamp(), p.keyId(),
-                p.mac(), OTHER_MAS);
+        otherRobot = new OtherRobot(bridge, OTHER_MAS, KEY);
+        otherRobot.announce(new String[] { "carol", "mallory" }, false);
         return agents.start(dir, agent, program);
     }
 
     private int fromOtherRobot(String sender, String receiver, String performative, String content, String inReplyTo) {
-        WireMessage m = new WireMessage(OTHER_MAS, sender, "", receiver, performative, content,
-                "mid" + System.nanoTime(), inReplyTo);
-        FleetAuth.Signed s = otherRobot.sign(m);
-        return bridge.deliverMessage(m.senderMas(), m.sender(), m.receiverMas(), m.receiver(), m.performative(),
-                m.content(), m.msgId(), m.inReplyTo(), s.incarnation(), s.sequence(), s.stamp(), s.keyId(), s.mac(),
-                OTHER_MAS);
+        return otherRobot.send(sender, receiver, performative, content, inReplyTo);
     }
 
     private static boolean hasPlanFor(RosAgArch arch, String goal) {
