@@ -55,7 +55,7 @@ def test_windows(window):
     assert settings(auth_window=window).window == float(window)
 
 
-@pytest.mark.parametrize('bad', [-1, 'long', True, None, float('nan')])
+@pytest.mark.parametrize('bad', [-1, 'long', True, None, float('nan'), float('inf'), 1e300])
 def test_a_bad_window_is_refused(bad):
     with pytest.raises(ValueError, match='auth_window'):
         settings(auth_window=bad)

@@ -8,6 +8,8 @@ import collections
 import numbers
 import os
 
+from rason_bridge.limits import seconds_to_nanos
+
 REQUIRED = 'required'
 OFF = 'off'
 DEFAULT_WINDOW = 60.0
@@ -40,6 +42,7 @@ def auth_settings(get_param, ros_home):
     window = get_param('auth_window', DEFAULT_WINDOW)
     if isinstance(window, bool) or not isinstance(window, numbers.Real) or not window >= 0:
         raise ValueError('auth_window must be a number of seconds, 0 or more (0: no clock checks), not %r' % (window,))
+    seconds_to_nanos('auth_window', window)  # infinite or beyond a Java long: refused here, not at start
     key_text = get_param('fleet_key', None)
     if key_text is not None and not isinstance(key_text, str):
         raise ValueError('fleet_key must be a string (quote it), not %s' % type(key_text).__name__)

@@ -176,7 +176,7 @@ class RasonMasNode(object):
         if settings.mode == OFF:
             self._bridge.fleetAuthOff()
             return
-        self._bridge.setAuthWindowNanos(int(settings.window * 1e9))
+        self._bridge.setAuthWindowNanos(seconds_to_nanos('auth_window', settings.window))
         try:
             if settings.key_text is not None:
                 rospy.logwarn('the fleet key comes from ~fleet_key: anyone who reaches the ROS master can read the '
