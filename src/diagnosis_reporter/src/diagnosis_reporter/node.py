@@ -1,9 +1,12 @@
-"""diagnosis_reporter_node: the decomposer of report_diagnosis(Component, Evidence).
+"""diagnosis_reporter_node: the decomposer of report_diagnosis(Component, Evidence) and
+report_mission(Completed, By, Recovery, Diagnosis).
 
 Publishes each diagnosis on /diagnostics (DiagnosticStatus ``rason/diagnosis``, values
-agent, component, evidence), once at once and then every ``~period`` s while it is the
-latest (diagnostic aggregators expect repeats), and answers the action ``Event.OK``, or
-``Event.BAD_PARAMETERS`` when the component is unknown (at once, without action_started).
+agent, component, evidence) and each mission outcome (``rason/mission``, values agent,
+completed, by, recovery, diagnosis), once at once and then every ``~period`` s while it is
+the latest of its name (diagnostic aggregators expect repeats), and answers the action
+``Event.OK``, or ``Event.BAD_PARAMETERS`` when a parameter is wrong (at once, without
+action_started).
 jason/action and jason/event go through rason_decomposer's Decomposer.
 """
 import threading
@@ -19,23 +22,26 @@ from diagnosis_reporter import report
 class DiagnosisReporter(object):
     def __init__(self, hardware_id, period):
         self._hardware_id = hardware_id
-        self._latest = None
+        self._latest = {}       # status name -> the latest Diagnosis or Mission
         self._lock = threading.Lock()
         self._diag_pub = rospy.Publisher('/diagnostics', DiagnosticArray, queue_size=10)
-        self._decomposer = Decomposer([report.ACTION], self._on_start, self._on_cancel)
+        self._decomposer = Decomposer([report.ACTION, report.MISSION_ACTION], self._on_start,
+                                      self._on_cancel)
         if period > 0:
             rospy.Timer(rospy.Duration(period), lambda _: self._publish())
 
     def _on_start(self, action):
+        mission = action.name == report.MISSION_ACTION
         try:
-            diagnosis = report.parse(action.agent, list(action.parameters))
+            parse = report.parse_mission if mission else report.parse
+            outcome = parse(action.agent, list(action.parameters))
         except report.BadDiagnosis as e:
             rospy.logerr('diagnosis_reporter: %s', e)
             self._decomposer.refuse(action, Event.BAD_PARAMETERS)
             return
-        rospy.loginfo('diagnosis_reporter: %s', diagnosis.message)
+        rospy.loginfo('diagnosis_reporter: %s', outcome.message)
         with self._lock:
-            self._latest = diagnosis
+            self._latest[report.MISSION_STATUS_NAME if mission else report.STATUS_NAME] = outcome
         self._publish()
         self._decomposer.finish(action, Event.OK)
 
@@ -45,13 +51,14 @@ class DiagnosisReporter(object):
 
     def _publish(self):
         with self._lock:
-            diagnosis = self._latest
-        if diagnosis is None:
+            latest = sorted(self._latest.items())
+        if not latest:
             return
-        status = DiagnosticStatus(level=diagnosis.level, name=report.STATUS_NAME,
-                                  message=diagnosis.message, hardware_id=self._hardware_id,
-                                  values=[KeyValue(k, v) for k, v in diagnosis.values()])
-        array = DiagnosticArray(status=[status])
+        array = DiagnosticArray(status=[
+            DiagnosticStatus(level=outcome.level, name=name, message=outcome.message,
+                             hardware_id=self._hardware_id,
+                             values=[KeyValue(k, v) for k, v in outcome.values()])
+            for name, outcome in latest])
         array.header.stamp = rospy.Time.now()
         self._diag_pub.publish(array)
 

@@ -219,3 +219,55 @@ class FaultState(object):
         :return: the value to publish
         """
         return self.odometry.filter(value)
+
+
+def is_motion_command(linear, angular):
+    """True when a velocity command asks the base to move (a non-zero speed).
+
+    NaN is not a motion: it compares false, like in :func:`transform_twist`.
+
+    :param linear: ``(x, y, z)``
+    :param angular: ``(x, y, z)``
+    """
+    return any(v != 0.0 and not math.isnan(v) for v in tuple(linear) + tuple(angular))
+
+
+class MidMissionFault(object):
+    """A fault injected some time after the mission starts (``fault_at``), rather than at
+    start-up: the mission starts with the first command that moves the robot.
+
+    :param fault: the fault to inject later (one of :data:`FAULTS`)
+    :param delay: seconds after the first motion command (> 0, finite)
+    :raises UnknownFaultError: an unknown fault, or ``none``
+    :raises ValueError: a delay that is not a positive finite number
+    """
+
+    def __init__(self, fault, delay):
+        self.fault = parse_fault(fault)
+        if self.fault == NONE:
+            raise UnknownFaultError('a fault to inject mid-mission must be one of %s'
+                                    % ', '.join(FAULTS))
+        delay = float(delay)
+        if not (delay > 0 and math.isfinite(delay)):
+            raise ValueError('fault_at must be a positive number of seconds, got %r' % delay)
+        self.delay = delay
+        self.started = None     # time of the first motion command
+        self.injected = False
+
+    def on_command(self, linear, angular, now):
+        """Note a velocity command; returns the time at which to inject when this command
+        starts the mission, else None.
+
+        :param now: seconds
+        """
+        if self.started is not None or not is_motion_command(linear, angular):
+            return None
+        self.started = float(now)
+        return self.started + self.delay
+
+    def due(self, now):
+        """The fault to inject now, once (None before its time and after)."""
+        if self.injected or self.started is None or now < self.started + self.delay:
+            return None
+        self.injected = True
+        return self.fault

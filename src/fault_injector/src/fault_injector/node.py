@@ -35,7 +35,10 @@ Both status topics are published when the fault changes and every
 Parameters:
 
 ``~initial_fault`` (string, default ``none``)
-    fault active from start-up.
+    fault active from start-up, or, with ``~fault_at``, the fault injected mid-mission.
+``~fault_at`` (float, default 0)
+    > 0: ``~initial_fault`` is injected that many seconds (ROS time) after the mission
+    starts, i.e. after the first command that moves the robot, instead of at start-up.
 ``~status_period`` (float, default 1.0)
     seconds between periodic status messages; 0 disables them.
 
@@ -103,10 +106,14 @@ class FaultInjectorNode(object):
     :raises faults.UnknownFaultError: if ``initial_fault`` is not valid
     """
 
-    def __init__(self, initial_fault=faults.NONE, status_period=1.0):
+    def __init__(self, initial_fault=faults.NONE, status_period=1.0, fault_at=0.0):
         # Callbacks of each subscriber, the service and the timer run on
         # different threads.
         self._lock = threading.Lock()
+        self._mid_mission = None
+        if fault_at > 0 and faults.parse_fault(initial_fault) != faults.NONE:
+            self._mid_mission = faults.MidMissionFault(initial_fault, fault_at)
+            initial_fault = faults.NONE
         self._state = faults.FaultState(initial_fault)
         self._cmd_pub = rospy.Publisher('cmd_vel_out', Twist, queue_size=10)
         self._odom_pub = rospy.Publisher('odom_out', Odometry, queue_size=10)
@@ -144,8 +151,24 @@ class FaultInjectorNode(object):
             rospy.logwarn_throttle(_WARN_PERIOD, 'fault_injector: NaN in %s: %s'
                                    % (rospy.resolve_name('cmd_vel_in'), lin + ang))
         with self._lock:
+            inject_at = None
+            if self._mid_mission is not None:
+                inject_at = self._mid_mission.on_command(lin, ang, rospy.get_time())
             lin, ang = self._state.twist(lin, ang)
         _publish(self._cmd_pub, Twist(linear=Vector3(*lin), angular=Vector3(*ang)))
+        if inject_at is not None:
+            rospy.loginfo('fault_injector: the mission started; %s at %.2f s',
+                          self._mid_mission.fault, inject_at)
+            rospy.Timer(rospy.Duration(self._mid_mission.delay), self._inject_mid_mission,
+                        oneshot=True)
+
+    def _inject_mid_mission(self, _event):
+        with self._lock:
+            fault = self._mid_mission.due(rospy.get_time())
+            message = self._state.request(fault)[1] if fault is not None else None
+        if message is not None:
+            rospy.loginfo('fault_injector: mid-mission: %s', message)
+            self._publish_status()
 
     def _on_odom(self, msg):
         if faults.has_nan(odom_numbers(msg)):
@@ -172,10 +195,11 @@ def main():
     rospy.init_node('fault_injector')
     initial = rospy.get_param('~initial_fault', faults.NONE)
     period = float(rospy.get_param('~status_period', 1.0))
+    fault_at = rospy.get_param('~fault_at', 0.0)
     try:
-        FaultInjectorNode(initial_fault=initial, status_period=period)
-    except faults.UnknownFaultError as e:
-        rospy.logfatal('fault_injector: ~initial_fault: %s', e)
+        FaultInjectorNode(initial_fault=initial, status_period=period, fault_at=float(fault_at))
+    except (faults.UnknownFaultError, ValueError, TypeError) as e:
+        rospy.logfatal('fault_injector: ~initial_fault / ~fault_at: %s', e)
         raise SystemExit(2)
     rospy.loginfo('fault_injector: ready, service %s', rospy.resolve_name('inject_fault'))
     rospy.spin()
