@@ -1,4 +1,4 @@
-from rason_tools.dialogue import format_diagnosis, format_message
+from rason_tools.dialogue import format_diagnosis, format_message, format_mission
 
 
 def test_broadcast_is_shown_as_all():
@@ -23,3 +23,16 @@ def test_diagnosis_without_agent_uses_the_namespace():
 
 def test_status_without_component_is_not_a_diagnosis():
     assert format_diagnosis('/faulty', [('agent', 'faulty')]) is None
+
+
+def test_a_completed_mission_says_by_whom_and_how():
+    line = format_mission('/faulty', [('agent', 'faulty'), ('completed', 'true'), ('by', 'helper'),
+                                      ('recovery', 'delegate'), ('diagnosis', 'both_actuators')])
+    assert line == 'MISSION faulty: completed by helper (recovery delegate after both_actuators)'
+
+
+def test_a_failed_mission_says_so_and_a_status_without_outcome_prints_nothing():
+    line = format_mission('/faulty', [('completed', 'false'), ('recovery', 'none'),
+                                      ('diagnosis', 'undiagnosed')])
+    assert line == 'MISSION faulty: not completed (recovery none after undiagnosed)'
+    assert format_mission('/faulty', [('agent', 'faulty')]) is None

@@ -4,6 +4,9 @@
 //             listing did and why it fails; the README's case-study section sums them up),
 //   IMPROVED  asked for by thesis §8.1, or an explicit ending when evidence is missing
 //             (a wrong diagnosis is worse than "undiagnosed").
+// With the belief recovery(on) (faulty_mission.mas2j), the
+// diagnosis no longer ends the mission: faulty_recovery.asl (issue 15, thesis ch. 8 and
+// §8.1's MAPE-K loop) recovers from it. Without it, the case study ends at the diagnosis.
 
 /* Initial beliefs and rules */
 
@@ -37,14 +40,19 @@ helpTimeout(120000).
 +!start
 <- .my_name(Me);
     .wait(present(Other) & Other \== Me, 20000);
+    !noteMissionStart;
     !goToDestination.
--!start <- .print("No other robot around; going alone."); !goToDestination.
+-!start <- .print("No other robot around; going alone."); !noteMissionStart; !goToDestination.
+
+// IMPROVED: only the recovery plans need to know where the mission started.
++!noteMissionStart : not recovery(on) <- true.
 
 +!goToDestination
 <- .print("Moving to Destination");
     move(1);
     move(-1);
     .print("Arriving at destination");
+    +destinationReached;      // IMPROVED: the recovery plans tell a finished mission apart
     !conclude(none, "destination reached").
 
 // FIX: the thesis stored +reason(R1), but Jason sorts the failure annotations, so R1 is
@@ -165,23 +173,31 @@ helpTimeout(120000).
     .send(R, achieve, thanks);
     !conclude(left_actuator, "bad_move, seen turning counter-clockwise").
 
+// IMPROVED: what the helper saw is kept (Knowledge, for the recovery plans).
 +!reportFeedback(R, Deg, Depth, Yaw, Deg1, Depth1, Yaw1)
-<- .print(R," has reported as initial info( pos ",Deg," degrees, depth ",Depth," meters and yaw ",Yaw," degrees )");
+<- -+helpedBy(R);
+    -+seenMove(Deg, Depth, Yaw, Deg1, Depth1, Yaw1);
+    .print(R," has reported as initial info( pos ",Deg," degrees, depth ",Depth," meters and yaw ",Yaw," degrees )");
     .print("and current info( pos ",Deg1," degrees, depth ",Depth1," meters and yaw ",Yaw1," degrees )").
 
 // IMPROVED: the diagnosis is reported once (report_diagnosis puts it on /diagnostics),
-// then this robot's agents stop, which ends the scenario.
+// then this robot's agents stop, which ends the scenario (or, with recovery(on), the
+// recovery plans take over).
 +!conclude(Component, Evidence) : diagnosed(_)
 <- true.
 +!conclude(Component, Evidence)
 <- +diagnosed(Component);
     .print("Diagnosis: ", Component, " (", Evidence, ")");
     report_diagnosis(Component, Evidence);
-    !finish.
+    !afterDiagnosis(Component).
 -!conclude(Component, Evidence)
 <- .print("could not report the diagnosis");
     !finish.
 
++!afterDiagnosis(_) : not recovery(on) <- !finish.
+
 +!finish
 <- .wait(1000);   // let the last messages (thanks) leave
     .stopMAS.
+
+{ include("faulty_recovery.asl") }

@@ -139,3 +139,5 @@ maxSteadyReads(15).
 // FIX: the thesis copied each robot/4 percept into a mental note
 // (+robot(...) <- +robot(...)); those copies outlive the perception and made the plans
 // above act on positions no longer seen. Perceptions alone are used.
+
+{ include("helper_recovery.asl") }

@@ -19,3 +19,17 @@ def format_diagnosis(hardware_id, values):
     who = values.get('agent') or hardware_id.strip('/') or '?'
     evidence = values.get('evidence')
     return 'DIAGNOSIS %s: %s%s' % (who, component, ' (%s)' % evidence if evidence else '')
+
+
+def format_mission(hardware_id, values):
+    """``MISSION faulty: completed by helper (recovery delegate after both_actuators)`` from
+    the key/values of a rason/mission DiagnosticStatus; None when it says nothing."""
+    values = dict(values)
+    completed = values.get('completed')
+    if completed not in ('true', 'false'):
+        return None
+    who = values.get('agent') or hardware_id.strip('/') or '?'
+    how = '(recovery %s after %s)' % (values.get('recovery', '?'), values.get('diagnosis', '?'))
+    if completed == 'true':
+        return 'MISSION %s: completed by %s %s' % (who, values.get('by') or '?', how)
+    return 'MISSION %s: not completed %s' % (who, how)

@@ -1,11 +1,14 @@
 """``rosrun rason rason_dialogue``: prints the agents' dialogue (/rason/messages) and each
-new diagnosis (/diagnostics), one line each, e.g. for make demo."""
+new diagnosis and mission outcome (/diagnostics), one line each, e.g. for make demo."""
 import rospy
 from diagnostic_msgs.msg import DiagnosticArray
 from rason_msgs.msg import AgentMessage
 
-from diagnosis_reporter.report import STATUS_NAME
-from rason_tools.dialogue import format_diagnosis, format_message
+from diagnosis_reporter.report import MISSION_STATUS_NAME, STATUS_NAME
+from rason_tools.dialogue import format_diagnosis, format_message, format_mission
+
+#: The statuses printed, and how.
+FORMATS = {STATUS_NAME: format_diagnosis, MISSION_STATUS_NAME: format_mission}
 
 
 def main():
@@ -19,9 +22,10 @@ def main():
     def on_diagnostics(msg):
         # diagnosis_reporter repeats its status every period; print each one once.
         for status in msg.status:
-            if status.name != STATUS_NAME:
+            if status.name not in FORMATS:
                 continue
-            line = format_diagnosis(status.hardware_id, [(kv.key, kv.value) for kv in status.values])
+            line = FORMATS[status.name](status.hardware_id,
+                                        [(kv.key, kv.value) for kv in status.values])
             if line and line not in printed:
                 printed.add(line)
                 rospy.loginfo(line)

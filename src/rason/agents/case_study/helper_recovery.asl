@@ -1,0 +1,76 @@
+// The helper's part in Faulty's recovery (issue 15), included by helper.asl: it guides a
+// robot whose encoders failed, and takes over the mission of a robot that cannot move
+// (contract net participant). Perceptions: located/4 (robot_guide: where a robot seen by the
+// camera is, in this robot's odometry frame) and pos/3 (this robot's odometry).
+
+{ include("poses.asl") }
+
+guideSlice(20).        // s per guide action (below the bridge's 60 s action timeout)
+sightingSettle(1000).  // ms the guided robot is watched before its pose is sent
+detour(0.5, 0.75).     // m ahead of and beside a robot whose mission I take over: the
+                       // waypoint that keeps me clear of it on the way to its goal
+
+// The side of a robot (1 left, -1 right) on which I am, from my lateral offset L.
+sideOf(L, 1) :- L >= 0.
+sideOf(L, -1) :- L < 0.
+
+/* Guiding: keep the robot centred in the camera; robot_guide streams its pose */
+
++!guide(R)[source(R)]
+<- +guiding(R);
+    !!keepGuiding(R);
+    !tellSighting(R).
+
++!tellSighting(R) : sightingSettle(T)
+<- .wait(located(R, _, _, _), 5000, _);
+    .wait(T);
+    ?located(R, X, Y, Yaw);
+    .print("Guiding ", R, ", seen at (", X, ", ", Y, ")");
+    .send(R, tell, seenAt(X, Y, Yaw)).
+-!tellSighting(R) <- .print("I cannot see ", R, " to guide it").
+
++!keepGuiding(R) : guiding(R) & guideSlice(S)
+<- guide(R, S);
+    !keepGuiding(R).
++!keepGuiding(R) <- true.
+-!keepGuiding(R) <- .print("I lost sight of ", R); -guiding(R).
+
++!stopGuiding[source(R)] : guiding(R)
+<- -guiding(R);
+    .drop_desire(keepGuiding(R));
+    .print("Stopped guiding ", R).
++!stopGuiding[source(R)] <- true.
+
+-present(R) : guiding(R)
+<- -guiding(R);
+    .drop_desire(keepGuiding(R)).
+
+/* Contract net: a robot that cannot move calls for proposals to reach a point */
+
+// The task reach(R, Forward, Left): the point Forward m ahead of R and Left m to its left.
+// The offer is the distance I would drive; I can only offer while I see R.
++cfp(reach(R, F, L))[source(R)]
+: located(R, X, Y, T) & pos(HX, HY, HT)
+  & compose(pose(X, Y, T), pose(F, L, 0), Goal) & distance(pose(HX, HY, HT), Goal, Cost)
+<- -+offered(reach(R, F, L), pose(X, Y, T), Goal);
+    .send(R, tell, propose(reach(R, F, L), Cost)).
++cfp(Task)[source(R)]
+<- .print("I cannot offer to do ", Task, ": I do not see ", R, " or do not know where I am");
+    .send(R, tell, refuse(Task)).
+
++acceptProposal(Task)[source(R)] <- !takeOver(Task, R).
++rejectProposal(Task)[source(R)] <- -offered(Task, _, _).
+
++!takeOver(Task, R)
+: offered(Task, Robot, pose(GX, GY, GT)) & pos(HX, HY, HT) & detour(Ahead, Beside)
+  & relative(Robot, pose(HX, HY, HT), pose(_, HL, _)) & sideOf(HL, Side)
+  & compose(Robot, pose(Ahead, Side * Beside, 0), pose(WX, WY, _))
+<- .print("Taking over the mission of ", R, ": to (", GX, ", ", GY, ")");
+    goto(WX, WY);
+    goto(GX, GY);
+    .print("I reached the goal of ", R);
+    -offered(Task, _, _);
+    .send(R, tell, done(Task)).
+-!takeOver(Task, R)
+<- .print("I could not do the mission of ", R);
+    .send(R, tell, failure(Task)).
