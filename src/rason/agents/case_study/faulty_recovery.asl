@@ -94,7 +94,7 @@ curvatureSeen(K)
 // The helper streams my pose as it sees it (its odometry frame); the start and the goal in
 // that frame come from where it sees me now and how far I commanded myself since the start.
 +!beGuided : helpedBy(H) & .my_name(Me) & guideWait(W)
-<- .send(H, achieve, guide(Me));
+<- .send(H, achieve, guideMe);
     .wait(seenAt(_, _, _)[source(H)], W, _);
     ?seenAt(X, Y, T)[source(H)];
     ?cmd_pos(CX, CY, CT);

@@ -16,7 +16,7 @@ sideOf(L, -1) :- L < 0.
 
 /* Guiding: keep the robot centred in the camera; robot_guide streams its pose */
 
-+!guide(R)[source(R)]
++!guideMe[source(R)]
 <- +guiding(R);
     !!keepGuiding(R);
     !tellSighting(R).
