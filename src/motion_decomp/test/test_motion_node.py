@@ -273,3 +273,18 @@ def test_a_stale_or_broken_guided_pose_is_no_pose_and_a_zero_stamp_counts_as_rec
     ros.now += 0.05
     control.callback(None)
     assert out(ros)[-1] == ('cmd_vel', 0.0, 0.0)
+
+
+def test_actions_left_out_by_the_actions_parameter_are_not_taken(ros):
+    assert node.action_filter('move, turn compensate pose_source') == ('move', 'turn', 'compensate',
+                                                                        'pose_source')
+    assert node.action_filter(['goto', 'move']) == ('move', 'goto')
+    for bad in ('', [], 'move fly'):
+        with pytest.raises(ValueError):
+            node.action_filter(bad)
+    node.MotionDecompNode({}, rate=20.0, actions=('move', 'turn'))
+    for action_id, action, parameters in ((1, 'goto', ['1', '1']), (2, 'move', ['1'])):
+        ros.subscribers['jason/action'].callback(
+            Action(agent='a', action_id=action_id, action=action, parameters=parameters))
+    assert [(m.event_type, list(m.parameters)) for t, m in ros.published if t == 'jason/event'] == [
+        (Event.ACTION_STARTED, ['2'])]

@@ -44,6 +44,9 @@ Private parameters (defaults suit a TurtleBot 2 / Kobuki):
   frame ids of ``odom_commanded``
 - ``~agents`` (empty): when set (list, or comma-separated string), only these agents'
   actions are executed, so robots can share one ``jason/action`` topic
+- ``~actions`` (all five): the actions this node takes (list, or comma-separated string), so
+  that another decomposer can have one: ``robot.launch move_base:=true`` leaves ``goto`` to
+  the move_base wiring of ``generic_decomposer`` (agents/patrol)
 
 One motion (or setting) runs at a time; those arriving meanwhile wait in FIFO order.
 All times are ROS time (``/use_sim_time`` works).
@@ -132,6 +135,21 @@ def action_text(action):
     return '%s(%s)' % (name, ', '.join(action.parameters))
 
 
+def action_filter(value):
+    """The ``~actions`` parameter as a tuple of action names, in :data:`monitor.MOTION_ACTIONS`
+    order.
+
+    :param value: list of names or a comma/blank-separated string
+    :raises ValueError: empty, or a name this node does not execute
+    """
+    names = agent_filter(value)
+    unknown = names - set(monitor.MOTION_ACTIONS)
+    if unknown or not names:
+        raise ValueError('~actions must name some of %s, got %r'
+                         % (', '.join(monitor.MOTION_ACTIONS), value))
+    return tuple(a for a in monitor.MOTION_ACTIONS if a in names)
+
+
 def agent_filter(value):
     """The ``~agents`` parameter as a set of names (empty: all agents).
 
@@ -150,9 +168,11 @@ class MotionDecompNode(object):
     :param rate: control rate, Hz
     :param agents: names of the agents to serve; empty serves all
     :param frames: ``(frame_id, child_frame_id)`` of ``odom_commanded``
+    :param actions: the action names to take, some of :data:`monitor.MOTION_ACTIONS`
     """
 
-    def __init__(self, options, rate=20.0, agents=(), frames=('odom_commanded', 'base_footprint')):
+    def __init__(self, options, rate=20.0, agents=(), frames=('odom_commanded', 'base_footprint'),
+                 actions=monitor.MOTION_ACTIONS):
         self._lock = threading.Lock()
         self._scheduler = monitor.MotionScheduler(**options)
         self._pose = None
@@ -168,8 +188,7 @@ class MotionDecompNode(object):
         # registered before the Decomposer's hook: the control loop stops before the
         # Decomposer stops (on_cancel) and answers every held motion with shutdown
         rospy.on_shutdown(self._on_shutdown)
-        self._decomposer = Decomposer(monitor.MOTION_ACTIONS, self._on_start, self._on_cancel,
-                                      agents=agents)
+        self._decomposer = Decomposer(actions, self._on_start, self._on_cancel, agents=agents)
         self._timer = rospy.Timer(rospy.Duration(1.0 / rate), self._tick)
 
     def _on_odom(self, msg):
@@ -270,11 +289,12 @@ def main():
         rospy.logfatal('motion_decomp: ~rate must be positive, got %r', rate)
         raise SystemExit(2)
     try:
-        MotionDecompNode(options, rate, agents, frames)
-    except ValueError as e:
+        actions = action_filter(rospy.get_param('~actions', list(monitor.MOTION_ACTIONS)))
+        MotionDecompNode(options, rate, agents, frames, actions)
+    except (TypeError, ValueError) as e:
         rospy.logfatal('motion_decomp: bad parameter: %s', e)
         raise SystemExit(2)
-    rospy.loginfo('motion_decomp: ready (%s, %.0f Hz, agents: %s)',
+    rospy.loginfo('motion_decomp: ready (%s, %.0f Hz, actions: %s, agents: %s)',
                   ', '.join('%s=%g' % kv for kv in sorted(options.items())), rate,
-                  ', '.join(sorted(agents)) or 'all')
+                  ', '.join(actions), ', '.join(sorted(agents)) or 'all')
     rospy.spin()
