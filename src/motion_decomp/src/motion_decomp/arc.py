@@ -19,10 +19,9 @@ that curvature instead of against it:
 3. **drive**: forward speed, zero angular speed (the fault does the turning), slowing down
    over the last ``linear_speed / SLOWDOWN_GAIN`` metres when the target is the goal (an
    intermediate target is passed at full speed: the next turn on the spot stops the robot
-   anyway), until the arc ends: the
-   robot gets no closer to the target (by ``PASSED`` metres: the closest approach is behind
-   it), or its heading has turned more than ``2 * alpha + ARC_TURN_MARGIN`` (it curves more
-   than planned: it would circle);
+   anyway), until the arc ends: the robot gets no closer to the target (by ``PASSED``
+   metres: the closest approach is behind it), or its heading has turned more than
+   ``2 * alpha + ARC_TURN_MARGIN`` (it curves more than planned: it would circle);
 4. back to 1, from the pose where the arc ended.
 
 Odometry closes the loop: every arc starts from the measured pose, and an arc planned with a
