@@ -135,3 +135,36 @@ def test_bad_options_are_refused():
         GotoController(Goal(0, 0, None), 0.0, speed=1)
     with pytest.raises(ValueError, match='xy_tolerance must be a positive number'):
         GotoController(Goal(0, 0, None), 0.0, xy_tolerance=0)
+
+
+def test_a_goal_function_is_resolved_at_the_first_pose():
+    seen = []
+
+    def ahead(pose):
+        seen.append(pose)
+        return Goal(pose[0] + math.cos(pose[2]), pose[1] + math.sin(pose[2]), None)
+
+    c = GotoController(ahead, 0.0, no_progress_time=1.0)
+    assert c.update(None, 0.5) is None and c.goal is None and c.command() == (0.0, 0.0)
+    result, (x, y, _), _ = drive(c, (1.0, 2.0, math.pi / 2))
+    assert seen == [(1.0, 2.0, math.pi / 2)]
+    assert result == goto.SUCCEEDED and math.hypot(1.0 - x, 3.0 - y) <= 0.05
+
+
+def test_a_steering_drives_until_the_position_then_the_controller_aligns():
+    calls = []
+
+    class Straight(object):
+        phase = 'mine'
+
+        def steer(self, pose, goal, linear_speed, angular_speed):
+            calls.append((goal, linear_speed, angular_speed))
+            return (linear_speed, 0.0)
+
+    c = GotoController(Goal(1.0, 0.0, 0.5), 0.0, Straight(), linear_speed=0.3, angular_speed=0.4)
+    assert c.update((0.0, 0.0, 0.0), 0.0) is None
+    assert c.command() == (0.3, 0.0) and c.phase == 'mine'
+    assert calls == [(Goal(1.0, 0.0, 0.5), 0.3, 0.4)]
+    assert c.update((0.99, 0.0, 0.0), 1.0) is None
+    assert c.phase == GotoController.ALIGN and c.command()[0] == 0 and c.command()[1] > 0
+    assert len(calls) == 1        # the steering is not asked once the position is reached

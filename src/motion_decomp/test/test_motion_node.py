@@ -51,6 +51,7 @@ def ros(monkeypatch):
     monkeypatch.setattr(rospy, 'on_shutdown', fakes.shutdown_hooks.append)
     monkeypatch.setattr(rospy, 'is_shutdown', lambda: False)
     monkeypatch.setattr(rospy, 'get_time', lambda: fakes.now)
+    monkeypatch.setattr(rospy, 'logwarn_throttle', lambda *args, **kwargs: None)   # needs ROS time
     return fakes
 
 
@@ -77,12 +78,13 @@ def robot(ros):
 
 
 def out(ros, since=0):
-    """What was published since index ``since``, as comparable tuples."""
+    """What was published on cmd_vel and jason/event since index ``since``, as comparable
+    tuples (odom_commanded has tests of its own)."""
     result = []
     for topic, msg in ros.published[since:]:
         if topic == 'cmd_vel':
             result.append(('cmd_vel', msg.linear.x, msg.angular.z))
-        else:
+        elif topic == 'jason/event':
             result.append((topic, msg.agent, msg.event_type, list(msg.parameters)))
     return result
 
@@ -155,3 +157,134 @@ def test_agents_filter(ros):
             Action(agent=agent, action_id=1, action='move', parameters=['1']))
     assert [(m.agent, m.event_type) for t, m in ros.published if t == 'jason/event'] == [
         ('a', Event.ACTION_STARTED)]
+
+
+# ---------------------------------------------------------------- issue 15: settings, guided pose, odom_commanded
+
+def commanded(ros, since=0):
+    """The odom_commanded messages published since index ``since``."""
+    return [msg for topic, msg in ros.published[since:] if topic == 'odom_commanded']
+
+
+def guided_pose(x, y, stamp):
+    from geometry_msgs.msg import PoseStamped
+    msg = PoseStamped()
+    msg.header.stamp = rospy.Time.from_sec(stamp)
+    msg.pose.position.x, msg.pose.position.y = x, y
+    msg.pose.orientation.w = 1.0
+    return msg
+
+
+def test_a_setting_is_started_at_once_and_answered_ok_at_the_next_tick_without_a_twist(ros, robot):
+    _, send, tick = robot
+    send('a', 1, 'compensate', ['left', '2'])
+    assert out(ros) == [('jason/event', 'a', Event.ACTION_STARTED, ['1'])]
+    tick()
+    assert out(ros) == [('jason/event', 'a', Event.ACTION_STARTED, ['1']),
+                        ('jason/event', 'a', Event.ACTION_FEEDBACK, [Event.OK, '1'])]
+    send('a', 2, 'compensate', ['up', '2'])
+    send('a', 3, 'pose_source', ['gps'])
+    assert out(ros)[-2:] == [('jason/event', 'a', Event.ACTION_FEEDBACK, [Event.BAD_PARAMETERS, '2']),
+                             ('jason/event', 'a', Event.ACTION_FEEDBACK, [Event.BAD_PARAMETERS, '3'])]
+
+
+def test_odom_commanded_integrates_the_twists_at_every_tick_and_comes_at_1_hz_when_idle(ros, robot):
+    _, send, tick = robot
+    tick()                                   # idle: the first message, the zero pose
+    first = commanded(ros)
+    assert len(first) == 1 and first[0].pose.pose.position.x == 0.0
+    assert (first[0].header.frame_id, first[0].child_frame_id) == ('odom_commanded', 'base_footprint')
+    send('a', 1, 'move', ['0.1'])
+    mark = len(ros.published)
+    ticks = 0
+    while not any(o[0] == 'jason/event' and o[2] == Event.ACTION_FEEDBACK for o in out(ros, mark)):
+        tick(0.01)                           # the base goes 0.01 m per tick (0.2 m/s)
+        ticks += 1
+    during = commanded(ros, mark)
+    assert len(during) == ticks              # one per control tick while the move runs
+    assert [m.header.stamp.to_sec() for m in during] == pytest.approx(
+        [0.05 * (i + 2) for i in range(ticks)])
+    # 0.2 m/s commanded from the first tick to the end's zero twist
+    assert during[-1].pose.pose.position.x == pytest.approx(0.2 * 0.05 * (ticks - 1))
+    assert during[-2].twist.twist.linear.x == 0.2 and during[-1].twist.twist.linear.x == 0.0
+    mark = len(ros.published)
+    for _ in range(41):                      # 2.05 s idle
+        tick()
+    idle = commanded(ros, mark)
+    assert len(idle) == 2                    # at 1 Hz
+    assert idle[1].header.stamp.to_sec() - idle[0].header.stamp.to_sec() == pytest.approx(1.0)
+    assert idle[1].pose.pose.position.x == during[-1].pose.pose.position.x
+
+
+def test_a_cancel_stops_the_commanded_odometry_too(ros, robot):
+    _, send, tick = robot
+    send('a', 1, 'move', ['5'])
+    for _ in range(10):
+        tick(0.01)
+    send('a', 1, Action.CANCEL, [Event.DROPPED])
+    stopped = ros.now
+    for _ in range(30):
+        tick()
+    last = commanded(ros)[-1]
+    assert last.header.stamp.to_sec() > stopped + 0.9     # a second later, idle
+    assert last.pose.pose.position.x == pytest.approx(0.2 * 0.05 * 9)     # ticks 1..9 at 0.2 m/s
+
+
+def test_guided_poses_drive_after_pose_source_guided_while_fresh(ros):
+    node.MotionDecompNode({}, rate=20.0)
+    control = next(t for t in ros.timers if t.period == pytest.approx(0.05))
+    action = ros.subscribers['jason/action'].callback
+    guided = ros.subscribers['guided_pose'].callback
+    ros.subscribers['odom'].callback(Odometry())          # the odometry stays at 0 (frozen)
+    ros.now = 10.0
+    action(Action(agent='a', action_id=1, action='pose_source', parameters=['guided']))
+    action(Action(agent='a', action_id=2, action='move', parameters=['0.05']))
+    x = 0.0
+    for i in range(40):
+        ros.now += 0.05
+        if i % 2 == 0:                       # a guided pose every 0.1 s, 0.1 s old, moving
+            guided(guided_pose(x, 0.0, ros.now - 0.1))
+            x += 0.01
+        control.callback(None)
+    events = [o for o in out(ros) if o[0] == 'jason/event' and o[2] == Event.ACTION_FEEDBACK]
+    assert events == [('jason/event', 'a', Event.ACTION_FEEDBACK, [Event.OK, '1']),
+                      ('jason/event', 'a', Event.ACTION_FEEDBACK, [Event.OK, '2'])]
+    assert ('cmd_vel', 0.1, 0.0) in out(ros)            # the guided linear speed
+
+
+def test_a_stale_or_broken_guided_pose_is_no_pose_and_a_zero_stamp_counts_as_received(ros):
+    node.MotionDecompNode({}, rate=20.0)
+    control = next(t for t in ros.timers if t.period == pytest.approx(0.05))
+    action = ros.subscribers['jason/action'].callback
+    guided = ros.subscribers['guided_pose'].callback
+    action(Action(agent='a', action_id=1, action='pose_source', parameters=['guided']))
+    action(Action(agent='a', action_id=2, action='move', parameters=['1']))
+    ros.now = 100.0
+    control.callback(None)                               # the setting takes effect
+    guided(guided_pose(0.0, 0.0, 99.0))                  # 1 s old
+    ros.now += 0.05
+    control.callback(None)
+    assert out(ros)[-1] == ('cmd_vel', 0.0, 0.0)
+    guided(guided_pose(0.0, 0.0, 0.0))                   # zero stamp: "now"
+    ros.now += 0.05
+    control.callback(None)
+    assert out(ros)[-1] == ('cmd_vel', 0.1, 0.0)
+    guided(guided_pose(float('nan'), 0.0, ros.now))      # no pose any more
+    ros.now += 0.05
+    control.callback(None)
+    assert out(ros)[-1] == ('cmd_vel', 0.0, 0.0)
+
+
+def test_actions_left_out_by_the_actions_parameter_are_not_taken(ros):
+    assert node.action_filter('move, turn compensate pose_source') == ('move', 'turn', 'compensate',
+                                                                        'pose_source')
+    assert node.action_filter(['goto', 'move']) == ('move', 'goto')
+    for bad in ('', [], 'move fly'):
+        with pytest.raises(ValueError):
+            node.action_filter(bad)
+    node.MotionDecompNode({}, rate=20.0, actions=('move', 'turn'))
+    for action_id, action, parameters in ((1, 'goto', ['1', '1']), (2, 'move', ['1'])):
+        ros.subscribers['jason/action'].callback(
+            Action(agent='a', action_id=action_id, action=action, parameters=parameters))
+    assert [(m.event_type, list(m.parameters)) for t, m in ros.published if t == 'jason/event'] == [
+        (Event.ACTION_STARTED, ['2'])]

@@ -2,9 +2,13 @@
 (a ``move_base_msgs/MoveBaseAction`` server for the simulated robots, so agents written for
 a ROS navigation stack run on the simulator unchanged). Plain Python, no rospy.
 
-A :class:`GotoController` turns toward the goal, drives to it (steering as it goes, turning
-on the spot again when it is more than ``MAX_DRIVE_ERROR`` off, e.g. after passing the
-goal), then turns to the goal's heading when it has one. Poses are ``(x, y, yaw)``
+A :class:`GotoController` gets to the goal's position with a steering, then turns to the
+goal's heading when it has one. The default :class:`DirectSteering` turns toward the goal
+and drives to it (steering as it goes, turning on the spot again when it is more than
+``MAX_DRIVE_ERROR`` off, e.g. after passing the goal); ``motion_decomp.arc.ArcSteering``
+drives a base that curves by itself (an actuator fault) in planned arcs. The controller
+owns what every steering shares: arrival, the final heading, no progress and the timeout.
+Poses are ``(x, y, yaw)``
 (metres, radians, REP 103: yaw counter-clockwise); times are seconds (the node feeds ROS
 time). It ends with:
 
@@ -22,7 +26,7 @@ No obstacle avoidance and no map: the simulator's world is open floor.
 import math
 from collections import namedtuple
 
-from motion_decomp.monitor import PROGRESS_ANGLE, PROGRESS_DISTANCE, is_finite_pose, wrap_angle
+from motion_decomp.geometry import PROGRESS_ANGLE, PROGRESS_DISTANCE, is_finite_pose, wrap_angle
 
 SUCCEEDED = 'succeeded'
 NO_PROGRESS = 'no_progress'
@@ -87,23 +91,57 @@ def goal_from_pose(x, y, qx, qy, qz, qw):
     return Goal(float(x), float(y), 2.0 * math.atan2(qz, qw))
 
 
-def _toward(error, gain, floor, ceiling):
-    # a signed speed toward zero error: proportional, at least floor, at most ceiling
+def toward(error, gain, floor, ceiling):
+    """A signed speed that reduces ``error``: proportional (``gain``), at least ``floor``, at
+    most ``ceiling`` (floors cover the last centimetres and degrees)."""
     return math.copysign(min(ceiling, max(floor, gain * abs(error))), error)
+
+
+class DirectSteering(object):
+    """Steering of a healthy differential base: turn on the spot toward the goal until within
+    ``FACING``, then drive, steering proportionally, until more than ``MAX_DRIVE_ERROR`` off
+    (e.g. after passing the goal), then turn on the spot again."""
+
+    TURN, DRIVE = 'turn', 'drive'
+
+    def __init__(self):
+        self.phase = self.TURN
+
+    def steer(self, pose, goal, linear_speed, angular_speed):
+        """``(linear_x, angular_z)`` toward ``goal``'s position from ``pose``."""
+        x, y, yaw = pose
+        dx, dy = goal.x - x, goal.y - y
+        error = wrap_angle(math.atan2(dy, dx) - yaw)
+        if self.phase == self.DRIVE and abs(error) > MAX_DRIVE_ERROR:
+            self.phase = self.TURN
+        elif self.phase == self.TURN and abs(error) <= FACING:
+            self.phase = self.DRIVE
+        if self.phase == self.TURN:
+            return (0.0, toward(error, ANGULAR_GAIN, MIN_ANGULAR, angular_speed))
+        speed = min(linear_speed, max(MIN_LINEAR, LINEAR_GAIN * math.hypot(dx, dy)))
+        turn = max(-angular_speed, min(angular_speed, ANGULAR_GAIN * error))
+        return (speed * math.cos(error), turn)
 
 
 class GotoController(object):
     """Drives to one :class:`Goal`: call :meth:`update` each control cycle with the latest
     pose (None while there is none), then publish :meth:`command`.
 
+    :param goal: a :class:`Goal`, or a function of the first pose returning it (a goal
+        relative to where the robot is when the drive starts, e.g. "1 m ahead")
+    :param steering: how to get to the position: an object with
+        ``steer(pose, goal, linear_speed, angular_speed) -> (linear_x, angular_z)``, called
+        each cycle until the position is reached; default a new :class:`DirectSteering`
     :param options: keys of :data:`DEFAULTS`
     """
 
-    TURN, DRIVE, ALIGN = 'turn', 'drive', 'align'
+    ALIGN = 'align'
 
-    def __init__(self, goal, now, **options):
+    def __init__(self, goal, now, steering=None, **options):
         opts = check_options(options)
-        self.goal = goal
+        self.goal = goal if isinstance(goal, Goal) else None
+        self._make_goal = None if isinstance(goal, Goal) else goal
+        self.steering = steering if steering is not None else DirectSteering()
         self.linear_speed = opts['linear_speed']
         self.angular_speed = opts['angular_speed']
         self.xy_tolerance = opts['xy_tolerance']
@@ -111,7 +149,7 @@ class GotoController(object):
         self.no_progress_time = opts['no_progress_time']
         self.max_duration = opts['max_duration']
         self.started = float(now)
-        self.phase = self.TURN
+        self.aligning = False        # the position is reached: only the heading is left
         self.result = None
         self.distance = None         # to the goal, at the last pose
         self._command = (0.0, 0.0)
@@ -123,6 +161,11 @@ class GotoController(object):
     def done(self):
         return self.result is not None
 
+    @property
+    def phase(self):
+        """``align`` once the position is reached, else the steering's phase (if it has one)."""
+        return self.ALIGN if self.aligning else getattr(self.steering, 'phase', None)
+
     def update(self, pose, now):
         """Take the latest pose; returns None while driving, else the result (again and
         again once ended)."""
@@ -132,6 +175,8 @@ class GotoController(object):
             pose = None
         self._command = (0.0, 0.0)
         if pose is not None:
+            if self.goal is None:
+                self.goal = self._make_goal(tuple(float(v) for v in pose))
             self._note_progress(pose, now)
             if self._steer(pose):
                 return self._end(SUCCEEDED)
@@ -158,29 +203,18 @@ class GotoController(object):
     def _steer(self, pose):
         # sets self._command; True once the goal is reached
         x, y, yaw = pose
-        dx, dy = self.goal.x - x, self.goal.y - y
-        self.distance = math.hypot(dx, dy)
-        if self.phase != self.ALIGN and self._arrived('xy', self.distance, self.xy_tolerance):
-            self.phase = self.ALIGN     # the position is reached: it stays reached
-        if self.phase == self.ALIGN:
+        self.distance = math.hypot(self.goal.x - x, self.goal.y - y)
+        if not self.aligning and self._arrived('xy', self.distance, self.xy_tolerance):
+            self.aligning = True     # the position is reached: it stays reached
+        if self.aligning:
             if self.goal.yaw is None:
                 return True
             error = wrap_angle(self.goal.yaw - yaw)
             if self._arrived('yaw', abs(error), self.yaw_tolerance):
                 return True
-            self._command = (0.0, _toward(error, ANGULAR_GAIN, MIN_ANGULAR, self.angular_speed))
+            self._command = (0.0, toward(error, ANGULAR_GAIN, MIN_ANGULAR, self.angular_speed))
             return False
-        error = wrap_angle(math.atan2(dy, dx) - yaw)
-        if self.phase == self.DRIVE and abs(error) > MAX_DRIVE_ERROR:
-            self.phase = self.TURN
-        elif self.phase == self.TURN and abs(error) <= FACING:
-            self.phase = self.DRIVE
-        if self.phase == self.TURN:
-            self._command = (0.0, _toward(error, ANGULAR_GAIN, MIN_ANGULAR, self.angular_speed))
-        else:
-            speed = min(self.linear_speed, max(MIN_LINEAR, LINEAR_GAIN * self.distance))
-            turn = max(-self.angular_speed, min(self.angular_speed, ANGULAR_GAIN * error))
-            self._command = (speed * math.cos(error), turn)
+        self._command = self.steering.steer(pose, self.goal, self.linear_speed, self.angular_speed)
         return False
 
     def _arrived(self, key, error, tolerance):

@@ -1,8 +1,25 @@
-"""Motion decomposition core (thesis §5.3, §6.3): plain Python, no rospy (only the
-protocol's words from the generated ``rason_msgs.msg.Event``).
+"""Motion decomposition core (thesis §5.3, §6.3; issue 15): plain Python, no rospy (only
+the protocol's words from the generated ``rason_msgs.msg.Event``).
 
-Turns the agents' ``move(Metres)`` and ``turn(Degrees)`` actions into velocity
-commands and decides, from odometry poses, when a motion has ended and how.
+Turns the agents' motion actions into velocity commands and decides, from poses, when a
+motion has ended and how:
+
+``move(Metres)``, ``turn(Degrees)``
+    straight ahead (behind for Metres < 0) and on the spot: :class:`MotionMonitor`;
+``goto(X, Y)``
+    to the point (X, Y) m of the pose source's frame, any final heading:
+    :class:`motion_decomp.goto.GotoController`, OK within ``goto_tolerance``;
+``compensate(Side, Gain)``
+    a setting: later ``goto`` and ``move`` drive a base whose forward commands pick up the
+    curvature ``Gain`` (rad/m; ``left`` counter-clockwise, ``right`` clockwise, ``none``
+    normal driving) in planned arcs (:mod:`motion_decomp.arc`); a ``move(D)`` is then a
+    goto to the point D m ahead of where it starts, without the ``bad_move`` check;
+``pose_source(Name)``
+    a setting: later motions use the odometry (``odom``) or a fresh guided pose
+    (``guided``, :mod:`motion_decomp.pose_source`) and, while guided, the guided speeds.
+
+All of them wait in one FIFO (:class:`MotionScheduler`): a setting takes effect, and answers
+OK, when its turn comes, so the motions queued before it run with the old setting.
 
 SIGN CONVENTION OF ``turn`` -- read this first
     ``turn(D)`` with D > 0 turns the robot RIGHT (clockwise seen from above),
@@ -23,7 +40,8 @@ constants of ``rason_msgs/Event`` (``Event.OK``, ``Event.NO_PROGRESS``, ...):
 
 ``OK``
     the travelled distance (straight line from the start pose) or the turned
-    angle (unwrapped, so ``turn(360)`` works) reached the request.
+    angle (unwrapped, so ``turn(360)`` works) reached the request; a ``goto`` (or a
+    compensated ``move``) is within ``goto_tolerance`` of its point; a setting took effect.
 ``no_progress``
     the pose has not changed (< 1 mm and < 0.1 degree) for more than
     ``no_progress_time`` seconds while motion was wanted. This also covers "no
@@ -31,12 +49,14 @@ constants of ``rason_msgs/Event`` (``Event.OK``, ``Event.NO_PROGRESS``, ...):
     tell how far the robot went) and the action fails ``no_progress`` after
     ``no_progress_time``.
 ``bad_move``
-    during a move, the cosine between the planned direction (start heading,
+    during a move (not a compensated one), the cosine between the planned direction (start heading,
     reversed for a backward move) and the displacement start->current fell
     below ``bad_move_min_cos``; checked once the robot moved at least
     ``bad_move_min_distance`` metres, before which the direction is noise.
 ``bad_parameters``
-    missing, extra, non-numeric or non-finite parameter; fails at once.
+    missing, extra, non-numeric or non-finite parameter (``move``, ``turn``: one number;
+    ``goto``: two), a side other than ``left``, ``right``, ``none``, a gain below 0 or above
+    ``MAX_GAIN``, a pose source other than ``odom``, ``guided``; fails at once.
 ``timeout``
     the motion ran ``max_duration`` seconds without another result.
 ``shutdown``
@@ -52,14 +72,27 @@ from collections import deque, namedtuple
 # Only the generated message class (genpy), for the protocol's words: no rospy here.
 from rason_msgs.msg import Event
 
+from motion_decomp import goto
+from motion_decomp.arc import ArcSteering
+from motion_decomp.geometry import (PROGRESS_ANGLE, PROGRESS_DISTANCE,  # noqa: F401 (API)
+                                    is_finite_pose, wrap_angle, yaw_from_quaternion)
+from motion_decomp.pose_source import GUIDED, ODOM, POSE_SOURCES, select_pose
+
 MOVE = 'move'
 TURN = 'turn'
+GOTO = 'goto'
+COMPENSATE = 'compensate'
+POSE_SOURCE = 'pose_source'
 #: The action functors this decomposer executes; all others belong to other decomposers.
-MOTION_ACTIONS = (MOVE, TURN)
+MOTION_ACTIONS = (MOVE, TURN, GOTO, COMPENSATE, POSE_SOURCE)
+#: The actions that change how later motions run instead of moving the robot.
+SETTINGS = (COMPENSATE, POSE_SOURCE)
 
-#: Pose changes below both of these count as "no progress".
-PROGRESS_DISTANCE = 0.001          # metres
-PROGRESS_ANGLE = math.radians(0.1)
+#: ``compensate``'s sides: the sign of the curvature (REP 103: counter-clockwise positive).
+SIDES = {'left': 1.0, 'right': -1.0, 'none': 0.0}
+#: The largest accepted gain (rad/m): a 5 cm turning radius. A Kobuki with one wheel
+#: stopped turns about it, at half its 0.23 m wheel base: 8.7 rad/m; the thesis's model 2.
+MAX_GAIN = 20.0
 
 #: Default tuning; speeds like a TurtleBot 2 (Kobuki max 0.7 m/s, comfortable 0.2 m/s).
 DEFAULTS = dict(
@@ -69,10 +102,42 @@ DEFAULTS = dict(
     bad_move_min_distance=0.05,  # m
     bad_move_min_cos=0.99,      # cos(8.1 degrees)
     max_duration=50.0,          # s; below the bridge's 60 s action timeout, so the agent gets this reason
+    goto_tolerance=0.05,        # m: goto (and a compensated move) is OK this close to its point
+    segment_length=0.3,         # m: the longest arc of compensated driving (see arc.py)
+    guided_linear_speed=0.1,    # m/s and rad/s while the pose source is guided: the guided
+    guided_angular_speed=0.3,   # pose comes ~0.2 s late at ~10 Hz, slower is more precise
+    guided_max_age=0.5,         # s: an older guided pose is no pose
 )
 
 #: A requested motion: ``kind`` is MOVE (``amount`` in metres) or TURN (``amount`` in degrees).
 Motion = namedtuple('Motion', 'kind amount')
+
+
+class Goto(namedtuple('Goto', 'x y')):
+    """``goto(X, Y)``: the point, metres in the pose source's frame."""
+    __slots__ = ()
+    kind = GOTO
+
+
+class Compensation(namedtuple('Compensation', 'side gain')):
+    """``compensate(Side, Gain)``: ``side`` one of :data:`SIDES`, ``gain`` rad/m >= 0."""
+    __slots__ = ()
+    kind = COMPENSATE
+
+    @property
+    def curvature(self):
+        """Signed rad/m, counter-clockwise positive; 0 means normal driving."""
+        return SIDES[self.side] * self.gain
+
+
+class PoseSourceSetting(namedtuple('PoseSourceSetting', 'name')):
+    """``pose_source(Name)``: ``name`` one of :data:`POSE_SOURCES`."""
+    __slots__ = ()
+    kind = POSE_SOURCE
+
+
+#: Normal driving: what ``compensate(none, 0)`` sets.
+NO_COMPENSATION = Compensation('none', 0.0)
 
 #: What to publish on jason/event: parameters are ``[result, str(action_id)]``.
 Feedback = namedtuple('Feedback', 'agent action_id result')
@@ -98,56 +163,51 @@ def is_motion(action):
     return action in MOTION_ACTIONS
 
 
-def parse_motion(action, parameters):
-    """Read a ``move``/``turn`` action.
+def _number(action, text):
+    # one parameter as a finite float, or BadParameters
+    if not isinstance(text, str) or not _NUMBER.match(text):
+        raise BadParameters('%s(%r): the parameter is not a number' % (action, text))
+    value = float(text)
+    if not math.isfinite(value):  # e.g. "1e999"
+        raise BadParameters('%s(%r): the parameter is not finite' % (action, text))
+    return value
 
-    :param action: the functor, ``move`` or ``turn``
-    :param parameters: the action's arguments as text; exactly one finite number
-    :rtype: Motion
+
+def parse_motion(action, parameters):
+    """Read a motion action (any of :data:`MOTION_ACTIONS`).
+
+    :param action: the functor
+    :param parameters: the action's arguments as text (numbers as Jason prints them, atoms bare)
+    :returns: a :class:`Motion` (``move``, ``turn``), :class:`Goto`, :class:`Compensation` or
+        :class:`PoseSourceSetting`; each has a ``kind``, the functor
     :raises UnknownAction: the functor is not a motion
-    :raises BadParameters: wrong arity, not a number, NaN or infinite
+    :raises BadParameters: wrong arity, not a number, NaN or infinite, an unknown side or pose
+        source, a gain out of [0, MAX_GAIN]
     """
     if not is_motion(action):
         raise UnknownAction('%r is not a motion action (only %s)' % (action, ', '.join(MOTION_ACTIONS)))
     parameters = list(parameters)
-    if len(parameters) != 1:
-        raise BadParameters('%s needs exactly one numeric parameter, got %d: %r'
-                            % (action, len(parameters), parameters))
-    text = parameters[0]
-    if not isinstance(text, str) or not _NUMBER.match(text):
-        raise BadParameters('%s(%r): the parameter is not a number' % (action, text))
-    amount = float(text)
-    if not math.isfinite(amount):  # e.g. "1e999"
-        raise BadParameters('%s(%r): the parameter is not finite' % (action, text))
-    return Motion(action, amount)
-
-
-def wrap_angle(angle):
-    """The same angle in [-pi, pi).
-
-    :param angle: radians
-    """
-    return (angle + math.pi) % (2.0 * math.pi) - math.pi
-
-
-def yaw_from_quaternion(x, y, z, w):
-    """Rotation about z of a quaternion (the robot's heading in the plane).
-
-    :param x: quaternion x
-    :param y: quaternion y
-    :param z: quaternion z
-    :param w: quaternion w
-    :returns: radians in [-pi, pi]
-    """
-    return math.atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z))
-
-
-def is_finite_pose(pose):
-    """True when ``pose`` is an ``(x, y, yaw)`` of finite numbers.
-
-    :param pose: ``(x, y, yaw)``
-    """
-    return all(math.isfinite(v) for v in pose)
+    arity = 2 if action in (GOTO, COMPENSATE) else 1
+    if len(parameters) != arity:
+        raise BadParameters('%s needs exactly %d parameter(s), got %d: %r'
+                            % (action, arity, len(parameters), parameters))
+    if action == GOTO:
+        return Goto(_number(action, parameters[0]), _number(action, parameters[1]))
+    if action == COMPENSATE:
+        side, gain = parameters[0], _number(action, parameters[1])
+        if side not in SIDES:
+            raise BadParameters('compensate(%r, ...): the side is not one of %s'
+                                % (side, ', '.join(sorted(SIDES))))
+        if not 0 <= gain <= MAX_GAIN:
+            raise BadParameters('compensate(..., %r): the gain (rad/m) is not in [0, %g]'
+                                % (parameters[1], MAX_GAIN))
+        return Compensation(side, gain)
+    if action == POSE_SOURCE:
+        if parameters[0] not in POSE_SOURCES:
+            raise BadParameters('pose_source(%r): not one of %s'
+                                % (parameters[0], ', '.join(POSE_SOURCES)))
+        return PoseSourceSetting(parameters[0])
+    return Motion(action, _number(action, parameters[0]))
 
 
 def check_options(options):
@@ -161,7 +221,8 @@ def check_options(options):
         raise ValueError('unknown motion option(s): %s' % ', '.join(sorted(unknown)))
     full = dict(DEFAULTS)
     full.update((k, float(v)) for k, v in options.items())
-    for key in ('linear_speed', 'angular_speed', 'no_progress_time', 'max_duration'):
+    for key in ('linear_speed', 'angular_speed', 'no_progress_time', 'max_duration', 'goto_tolerance',
+                'segment_length', 'guided_linear_speed', 'guided_angular_speed', 'guided_max_age'):
         if not (full[key] > 0 and math.isfinite(full[key])):
             raise ValueError('%s must be a positive number, got %r' % (key, full[key]))
     if not 0 <= full['bad_move_min_distance'] < float('inf'):
@@ -204,6 +265,7 @@ class MotionMonitor(object):
         self._prev_yaw = None
         self._still_pose = None
         self._still_since = self.started
+        self._has_pose = False      # the last update had a pose: only then is a command given
         if start_pose is not None and is_finite_pose(start_pose):
             self._begin(start_pose, now)
 
@@ -214,6 +276,7 @@ class MotionMonitor(object):
 
     def _begin(self, pose, now):
         self.start_pose = tuple(float(v) for v in pose)
+        self._has_pose = True
         self._prev_yaw = self.start_pose[2]
         self._still_pose = self.start_pose
         # The robot is only commanded from now on, so progress is expected from now.
@@ -239,6 +302,7 @@ class MotionMonitor(object):
             return self._end(Event.OK)
         if pose is not None and not is_finite_pose(pose):
             pose = None
+        self._has_pose = pose is not None
         if pose is not None:
             if self.start_pose is None:
                 self._begin(pose, now)
@@ -285,29 +349,74 @@ class MotionMonitor(object):
     def command(self):
         """The velocity to command now: ``(linear_x, angular_z)`` in m/s and rad/s.
 
-        Zero before the start pose is known (no odometry, no driving blind) and after the end.
+        Zero before the start pose is known, after an update without a pose (no odometry, a
+        stale guided pose: no driving blind) and after the end.
         """
-        if self.result is not None or self.start_pose is None or self.motion.amount == 0:
+        if self.result is not None or not self._has_pose or self.motion.amount == 0:
             return (0.0, 0.0)
         if self.motion.kind == MOVE:
             return (self._direction() * self.linear_speed, 0.0)
         return (0.0, self._direction() * self.angular_speed)
 
 
+#: goto's words -> the protocol's
+_GOTO_RESULTS = {goto.SUCCEEDED: Event.OK, goto.NO_PROGRESS: Event.NO_PROGRESS,
+                 goto.TIMEOUT: Event.TIMEOUT}
+
+
+class GotoMotion(object):
+    """A ``goto`` (or a compensated ``move``) run by a :class:`~motion_decomp.goto.GotoController`,
+    answered in the protocol's words: the same ``update``/``command`` as :class:`MotionMonitor`.
+
+    :param controller: the :class:`~motion_decomp.goto.GotoController`
+    """
+
+    def __init__(self, controller):
+        self.controller = controller
+
+    @property
+    def done(self):
+        return self.controller.done
+
+    def update(self, pose, now):
+        """As :meth:`MotionMonitor.update`: ``None`` while driving, else ``OK``,
+        ``no_progress`` or ``timeout``."""
+        result = self.controller.update(pose, now)
+        return None if result is None else _GOTO_RESULTS[result]
+
+    def command(self):
+        """``(linear_x, angular_z)``: zero without a pose and after the end."""
+        return self.controller.command()
+
+
+def point_ahead(metres):
+    """A goal function for :class:`~motion_decomp.goto.GotoController`: the point ``metres``
+    ahead of the first pose (behind for a negative distance), any final heading."""
+    def goal(pose):
+        x, y, yaw = pose
+        return goto.Goal(x + metres * math.cos(yaw), y + metres * math.sin(yaw), None)
+    return goal
+
+
 _Request = namedtuple('_Request', 'agent action_id motion')
 
 
 class MotionScheduler(object):
-    """One motion at a time per robot; later motions wait in a FIFO queue.
+    """One motion at a time per robot; later motions, and settings, wait in a FIFO queue.
 
-    :param options: :class:`MotionMonitor` tuning, keys of :data:`DEFAULTS`
+    The settings (``compensate``, ``pose_source``) apply when their turn comes, in the
+    :meth:`step` that takes them from the queue, and are answered OK there.
+
+    :param options: tuning, keys of :data:`DEFAULTS`
     :raises ValueError: bad options
     """
 
     def __init__(self, **options):
         self.options = check_options(options)
         self._queue = deque()
-        self.current = None     # (request, MotionMonitor) or None
+        self.current = None     # (request, MotionMonitor or GotoMotion) or None
+        self.compensation = NO_COMPENSATION
+        self.pose_source = ODOM
 
     @property
     def pending(self):
@@ -319,7 +428,7 @@ class MotionScheduler(object):
 
         :param agent: the acting agent, echoed in the feedback
         :param action_id: echoed in the feedback
-        :param action: ``move`` or ``turn``
+        :param action: one of :data:`MOTION_ACTIONS`
         :param parameters: the action's arguments as text
         :returns: a :class:`Feedback` to publish at once (``bad_parameters``), or ``None`` when queued
         :raises UnknownAction: not a motion action (the caller should ignore it)
@@ -331,29 +440,74 @@ class MotionScheduler(object):
         self._queue.append(_Request(agent, action_id, motion))
         return None
 
-    def step(self, pose, now):
+    def pose(self, odom, guided, now):
+        """The pose the motions use now, from the present pose source.
+
+        :param odom: the latest odometry ``(x, y, yaw)`` or ``None``
+        :param guided: the latest guided :class:`~motion_decomp.pose_source.StampedPose` or ``None``
+        :param now: seconds
+        """
+        return select_pose(self.pose_source, odom, guided, now, self.options['guided_max_age'])
+
+    def step(self, pose, now, guided=None):
         """One control cycle.
 
-        Starts the next queued motion when idle; at most one motion ends per
-        cycle, so the stop command of an end is never skipped.
+        Starts the next queued motion when idle (or applies the next setting); at most one
+        motion ends per cycle, so the stop command of an end is never skipped.
 
-        :param pose: latest ``(x, y, yaw)`` or ``None``
+        :param pose: latest odometry ``(x, y, yaw)`` or ``None``
         :param now: current time, seconds
+        :param guided: the latest guided :class:`~motion_decomp.pose_source.StampedPose` or
+            ``None``; used instead of ``pose`` while the pose source is ``guided``
         :returns: ``(command, feedback)``: ``command`` is ``(linear_x, angular_z)`` to
-            publish, ``(0.0, 0.0)`` when a motion just ended, ``None`` when idle (publish
-            nothing, other nodes may drive); ``feedback`` is a :class:`Feedback` or ``None``
+            publish, ``(0.0, 0.0)`` when a motion just ended, ``None`` when idle or when a
+            setting took effect (publish nothing, other nodes may drive); ``feedback`` is a
+            :class:`Feedback` or ``None``
         """
+        pose = self.pose(pose, guided, now)
         if self.current is None:
             if not self._queue:
                 return None, None
             request = self._queue.popleft()
-            self.current = (request, MotionMonitor(request.motion, pose, now, **self.options))
+            if request.motion.kind in SETTINGS:
+                self._apply(request.motion)
+                return None, Feedback(request.agent, request.action_id, Event.OK)
+            self.current = (request, self._start(request.motion, pose, now))
         request, monitor = self.current
         result = monitor.update(pose, now)
         if result is None:
             return monitor.command(), None
         self.current = None
         return (0.0, 0.0), Feedback(request.agent, request.action_id, result)
+
+    def _apply(self, setting):
+        if setting.kind == COMPENSATE:
+            self.compensation = setting
+        else:
+            self.pose_source = setting.name
+
+    def motion_options(self):
+        """The tuning of a motion starting now: :data:`DEFAULTS` keys, with the guided speeds
+        as ``linear_speed``/``angular_speed`` while the pose source is guided."""
+        options = dict(self.options)
+        if self.pose_source == GUIDED:
+            options.update(linear_speed=options['guided_linear_speed'],
+                           angular_speed=options['guided_angular_speed'])
+        return options
+
+    def _start(self, motion, pose, now):
+        # the runner of a motion, under the settings in effect now
+        options = self.motion_options()
+        curvature = self.compensation.curvature
+        if motion.kind == TURN or (motion.kind == MOVE and (curvature == 0 or motion.amount == 0)):
+            return MotionMonitor(motion, pose, now, **options)
+        goal = (goto.Goal(motion.x, motion.y, None) if motion.kind == GOTO
+                else point_ahead(motion.amount))
+        steering = ArcSteering(curvature, options['segment_length']) if curvature != 0 else None
+        return GotoMotion(goto.GotoController(
+            goal, now, steering, linear_speed=options['linear_speed'],
+            angular_speed=options['angular_speed'], xy_tolerance=options['goto_tolerance'],
+            no_progress_time=options['no_progress_time'], max_duration=options['max_duration']))
 
     def cancel(self, agent, action_id):
         """Take back motions (an ``Action.CANCEL``): a queued one leaves the queue, the
