@@ -38,7 +38,7 @@ def no_camera(x, y):
 def test_it_ends_ok_once_the_time_is_over():
     r = run()
     for now in (100.0, 101.5, 103.0, 104.5):
-        r.frame(now, 1.0, (2.0, 0.0))
+        r.frame(now, 1.0, (2.0, 0.0), now - 0.1)
         assert r.outcome(now) is None
     assert r.outcome(104.99) is None
     assert r.outcome(105.0) == Event.OK
@@ -47,16 +47,16 @@ def test_it_ends_ok_once_the_time_is_over():
 def test_a_robot_never_seen_is_lost_after_lost_after():
     r = run()
     for now in (100.5, 101.0, 101.9):
-        r.frame(now, None, None)
-        assert r.command(no_camera) == 0.0
+        r.frame(now, None, None, now - 0.1)
+        assert r.command(now, no_camera) == 0.0
         assert r.outcome(now) is None
     assert r.outcome(102.0) == Event.LOST
 
 
 def test_lost_counts_from_the_last_sighting():
     r = run()
-    r.frame(101.5, 0.0, None)
-    r.frame(102.0, None, None)
+    r.frame(101.5, 0.0, None, 101.4)
+    r.frame(102.0, None, None, 101.9)
     assert r.outcome(103.4) is None
     assert r.outcome(103.5) == Event.LOST
 
@@ -67,8 +67,8 @@ def test_the_time_being_over_wins_over_lost():
 
 def test_it_aims_at_the_located_point_as_the_camera_sees_it_now():
     r = run()
-    assert r.command(lambda x, y: 10.0) == 0.0           # nothing located yet
-    r.frame(100.1, 10.0, (2.0, -0.35))
+    assert r.command(100.0, lambda x, y: 10.0) == 0.0    # nothing located yet
+    r.frame(100.1, 10.0, (2.0, -0.35), 100.0)
     asked = []
     bearing = {(2.0, -0.35): 10.0}
 
@@ -76,31 +76,40 @@ def test_it_aims_at_the_located_point_as_the_camera_sees_it_now():
         asked.append((x, y))
         return bearing[(x, y)]
 
-    assert r.command(camera) == pytest.approx(-2.0 * math.radians(10.0))
+    assert r.command(100.15, camera) == pytest.approx(-2.0 * math.radians(10.0))
     bearing[(2.0, -0.35)] = 0.5                          # the base turned toward it
-    assert r.command(camera) == 0.0
+    assert r.command(100.2, camera) == 0.0
     assert asked == [(2.0, -0.35)] * 2
 
 
-def test_a_frame_without_the_robot_keeps_the_aim_at_its_last_point():
+def test_it_aims_where_a_moving_robot_is_now():
     r = run()
-    r.frame(100.1, 10.0, (2.0, -0.35))
-    r.frame(100.2, None, None)
-    assert r.command(lambda x, y: 10.0) == pytest.approx(-2.0 * math.radians(10.0))
-    assert r.command(no_camera) == 0.0                   # no camera pose: no turn
+    for k in range(5):                                   # 0.2 m/s along +y
+        r.frame(100.1 + 0.1 * k, 0.0, (2.0, 0.02 * k), 100.0 + 0.1 * k)
+    asked = []
+    r.command(100.6, lambda x, y: asked.append((x, y)) or 0.0)
+    assert asked == [pytest.approx((2.0, 0.08 + 0.2 * 0.2))]   # 0.2 s after the newest frame
+
+
+def test_a_frame_without_the_robot_keeps_the_aim_at_its_track():
+    r = run()
+    r.frame(100.1, 10.0, (2.0, -0.35), 100.0)
+    r.frame(100.2, None, None, 100.1)
+    assert r.command(100.25, lambda x, y: 10.0) == pytest.approx(-2.0 * math.radians(10.0))
+    assert r.command(100.3, no_camera) == 0.0            # no camera pose: no turn
 
 
 def test_a_frame_that_could_not_locate_it_aims_at_its_angle_until_the_next_frame():
     r = run()
-    r.frame(100.1, 10.0, (2.0, -0.35))
-    r.frame(100.2, -20.0, None)                          # seen, not located (no transform)
-    assert r.command(lambda x, y: 10.0) == 0.4
-    r.frame(100.3, None, None)                           # that angle is stale now: the point
-    assert r.command(lambda x, y: 10.0) == pytest.approx(-2.0 * math.radians(10.0))
+    r.frame(100.1, 10.0, (2.0, -0.35), 100.0)
+    r.frame(100.2, -20.0, None, 100.1)                   # seen, not located (no transform)
+    assert r.command(100.25, lambda x, y: 10.0) == 0.4
+    r.frame(100.3, None, None, 100.2)                    # that angle is stale now: the track
+    assert r.command(100.35, lambda x, y: 10.0) == pytest.approx(-2.0 * math.radians(10.0))
 
 
 def test_a_clock_that_goes_back_does_not_unsee():
     r = run()
-    r.frame(103.0, 0.0, None)
-    r.frame(102.0, 0.0, None)
+    r.frame(103.0, 0.0, None, 102.9)
+    r.frame(102.0, 0.0, None, 101.9)
     assert r.outcome(104.9) is None

@@ -33,9 +33,9 @@ class Centring(object):
     """:func:`centring_speed` with hysteresis: the base starts turning when the robot is
     beyond the dead band and goes on until it is within ``SETTLE`` of it. Without it, a robot
     moving across the view is only ever chased back to the dead band's edge, and sits there
-    with every delay of the camera added on top (rostest sim_guide, a robot crossing the view
-    at about 6 deg/s: 4.1–4.2 deg off the centre at most, 3.6 on average without it; 3.8–4.3
-    and 2.2–2.6 with it).
+    with every delay added on top (rostest sim_guide, a robot crossing the view at about
+    6 deg/s: 3.2–3.3 deg off the centre at most and 2.9 on average without it, 2.7 and 1.5
+    with it).
 
     :param deadband: degrees
     :param gain: 1/s

@@ -8,13 +8,14 @@ Where to aim: the camera's frames come at 10 Hz and reach the node 0.1–0.3 s a
 stamp (rendering, the cloud, detection; more on a loaded machine). Turning on each frame's
 Angle alone would answer the base's own turn that late, and the loop overshoots and swings
 (seen on the simulator under load: ±11 deg). So each frame's sighting is kept as the POINT
-of the odometry frame where the robot was (:mod:`robot_guide.locate`), and the node turns,
-at its own faster rate, by the angle at which the camera sees that point NOW, from the
+of the odometry frame where the robot was (:mod:`robot_guide.locate`), moved on by the
+robot's own velocity to where it is now (:class:`robot_guide.track.Track`), and the node
+turns, at its own faster rate, by the angle at which the camera sees that point NOW, from the
 newest odometry (:func:`robot_guide.locate.bearing`): the base's own turn is then answered
-at the odometry's delay, and only the seen robot's own motion at the camera's. Between
-frames, and in frames that miss the robot (a robot crossing the view side-on hides one
-cylinder behind the other), the run keeps aiming at the last point. A frame whose point could
-not be worked out (no transform) leaves its Angle as the aim until the next frame.
+at the odometry's delay, and the seen robot's motion from its track. Between frames, and in
+frames that miss the robot (a robot crossing the view side-on hides one cylinder behind the
+other), the run keeps aiming at the track. A frame whose point could not be worked out (no
+transform) leaves its Angle as the aim until the next frame.
 """
 import math
 
@@ -22,6 +23,7 @@ from rason_msgs.msg import Event
 from rason_wiring import terms
 
 from robot_guide.centring import Centring
+from robot_guide.track import Track
 
 ACTION = 'guide'
 
@@ -62,12 +64,12 @@ class GuideRun(object):
         self.end = start + seconds
         self.lost_after = lost_after
         self.last_seen = start
-        self.point = None        # (x, y) in the odometry frame where it was last located
+        self.track = Track()     # where it was located in the odometry frame, and its velocity
         self.angle = None        # the last frame's Angle, when that frame could not locate it
         self._centring = Centring(deadband, gain, max_speed)
 
-    def frame(self, now, angle, point):
-        """One camera frame handled at ``now``.
+    def frame(self, now, angle, point, stamp):
+        """One camera frame, stamped ``stamp``, handled at ``now``.
 
         :param angle: ``name``'s Angle in it (degrees, clockwise), None when not in it
         :param point: ``(x, y)`` where it is in the odometry frame, None when not worked out
@@ -77,20 +79,22 @@ class GuideRun(object):
             return
         self.last_seen = max(self.last_seen, now)
         if point is not None:
-            self.point, self.angle = point, None
+            self.track.add(stamp, *point)
+            self.angle = None
         else:
             self.angle = angle
 
-    def command(self, bearing_of):
-        """The turn (``angular.z``, rad/s, REP 103) now.
+    def command(self, now, bearing_of):
+        """The turn (``angular.z``, rad/s, REP 103) at ``now``.
 
         :param bearing_of: ``bearing_of(x, y)`` -> the Angle at which the camera sees that
             point of the odometry frame now, or None when the camera's pose is unknown
         :returns: the centring turn toward the aim; 0.0 with nothing to aim at
         """
         aim = self.angle
-        if aim is None and self.point is not None:
-            aim = bearing_of(*self.point)
+        if aim is None:
+            point = self.track.at(now)
+            aim = None if point is None else bearing_of(*point)
         return self._centring.speed(aim)
 
     def outcome(self, now):

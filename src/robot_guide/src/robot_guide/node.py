@@ -137,7 +137,7 @@ class RobotGuideNode(object):
                     self._publish_turn(0.0)
                 else:
                     self._publish_turn(run.command(
-                        lambda x, y: None if camera is None else locate.bearing(x, y, *camera)))
+                        now, lambda x, y: None if camera is None else locate.bearing(x, y, *camera)))
         if ended is not None:
             self._decomposer.finish(*ended)
         with self._gate_lock:
@@ -171,7 +171,7 @@ class RobotGuideNode(object):
                 run = self._run[1]
                 angle = next((r.angle for r in msg.robots if r.name == run.name), None)
                 point = next(((f.x, f.y) for f in located if f.name == run.name), None)
-                run.frame(now, angle, point)
+                run.frame(now, angle, point, msg.header.stamp.to_sec())
         frame = self._options['odom_frame']
         for found in located:
             self._pose_publisher(found.name).publish(pose_stamped(found, frame, msg.header.stamp))
