@@ -2,10 +2,12 @@
 import numpy as np
 import pytest
 import rospy
+from rason_msgs.msg import RobotSightings
 from sensor_msgs.msg import CameraInfo, Image
+from std_msgs.msg import Header
 
 import vision_scene as vs
-from vision_synth import cloud, detector, node
+from vision_synth import cloud, detector, geometry, literals, node
 
 
 class FakePublisher(object):
@@ -42,6 +44,10 @@ class Ros(object):
     def sent(self):
         return self.publishers['jason/perception'].sent
 
+    @property
+    def seen(self):
+        return self.publishers['robots_seen'].sent
+
 
 @pytest.fixture
 def ros(monkeypatch):
@@ -52,9 +58,10 @@ POINTS = 'camera/depth_registered/points'
 IMAGE = 'camera/rgb/image_raw'
 
 
-def scene_cloud(robot=(-10.0, 2.0, 30.0), stamp=1.0, with_rgb=True):
+def scene_cloud(robot=(-10.0, 2.0, 30.0), stamp=1.0, with_rgb=True, frame_id='cam_optical'):
     rgb, xyz = vs.Scene(robot).render()
-    msg = cloud.arrays_to_cloud(xyz, rgb if with_rgb else None, stamp=rospy.Time.from_sec(stamp))
+    msg = cloud.arrays_to_cloud(xyz, rgb if with_rgb else None, frame_id=frame_id,
+                                stamp=rospy.Time.from_sec(stamp))
     return msg, rgb
 
 
@@ -100,6 +107,34 @@ def test_one_perception_per_cloud(ros):
     assert ros.warnings == []
 
 
+def test_robots_seen_has_the_clouds_header_and_the_perceptions_values(ros):
+    node.VisionSynthNode(detector.Detector(), 'vision_synth_robots')
+    ros.feed(POINTS, scene_cloud(stamp=12.25, frame_id='helper/camera_rgb_optical_frame')[0])
+    ros.feed(POINTS, scene_cloud(robot=None, stamp=12.5)[0])
+    assert ros.publishers['robots_seen'].msg_class is RobotSightings
+    first, second = ros.seen
+    assert first.header.stamp == rospy.Time.from_sec(12.25)
+    assert first.header.frame_id == 'helper/camera_rgb_optical_frame'
+    assert [r.name for r in first.robots] == ['faulty']
+    robot = first.robots[0]
+    # the same numbers as the literal, before its rounding
+    assert ros.sent[0].perception == [literals.robot_literal(robot.name, robot.angle,
+                                                             robot.depth, robot.yaw)]
+    assert abs(robot.angle + 10) < 2 and abs(robot.depth - 2) < 0.05
+    assert second.robots == [] and second.header.stamp == rospy.Time.from_sec(12.5)
+
+
+def test_sightings_message_keeps_every_detection_unrounded():
+    header = Header(stamp=rospy.Time(3, 5), frame_id='f')
+    found = [detector.Detection('alpha', geometry.Pose(-1.23456, 2.34567, 170.987654, 0, 0.227),
+                                None, None),
+             detector.Detection('beta', geometry.Pose(20.5, 1.0, -3.0, 0, 0.227), None, None)]
+    msg = node.sightings_message(header, found)
+    assert msg.header is header
+    assert [(r.name, r.angle, r.depth, r.yaw) for r in msg.robots] == [
+        ('alpha', -1.23456, 2.34567, 170.987654), ('beta', 20.5, 1.0, -3.0)]
+
+
 @pytest.mark.parametrize('break_it', [
     lambda m: setattr(m, 'data', m.data[:100]),
     lambda m: setattr(m, 'fields', m.fields[:3]),  # no rgb
@@ -111,6 +146,7 @@ def test_bad_cloud_publishes_an_empty_list_and_warns(ros, break_it):
     break_it(msg)
     ros.feed(POINTS, msg)
     assert [m.perception for m in ros.sent] == [[]]
+    assert [m.robots for m in ros.seen] == [[]]
     assert len(ros.warnings) == 1 and 'unusable frame' in ros.warnings[0]
 
 

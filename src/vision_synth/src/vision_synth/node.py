@@ -18,6 +18,11 @@ Topics (relative names: run one node per robot, in the robot's namespace):
   (or ``~source``), ``perception`` = ``robot(Name,Angle,Depth,Yaw)`` literals; an empty
   list when no robot is seen, and also when a frame is unusable (with a throttled warning):
   a perception the node cannot back must not linger in the agent's beliefs
+- publishes ``robots_seen`` (rason_msgs/RobotSightings), for every cloud processed, next to
+  the perception: the cloud's header (stamp, optical frame) and the same robots as
+  RobotSighting (name, angle, depth, yaw: the perception's values before rounding); an empty
+  list whenever the perception is one. For nodes that need numbers and the frame's time
+  (robot_guide locates the seen robots in the odometry frame with them)
 
 Private parameters (defaults in ``config/vision_synth.yaml`` and :data:`detector.DEFAULTS`):
 
@@ -36,7 +41,7 @@ import threading
 import time
 
 import rospy
-from rason_msgs.msg import Perception
+from rason_msgs.msg import Perception, RobotSighting, RobotSightings
 from sensor_msgs.msg import CameraInfo, Image, PointCloud2
 
 from vision_synth import cloud, detector
@@ -62,6 +67,18 @@ def intrinsics_from_info(msg):
         return None
 
 
+def sightings_message(header, found):
+    """The rason_msgs/RobotSightings of one cloud: its ``header`` and a RobotSighting per
+    :class:`detector.Detection` (values as computed: degrees clockwise-positive, metres).
+
+    :param header: the cloud's std_msgs/Header (stamp and optical frame)
+    :param found: list of :class:`detector.Detection`
+    """
+    return RobotSightings(header=header, robots=[
+        RobotSighting(name=d.name, angle=d.pose.angle, depth=d.pose.depth, yaw=d.pose.yaw)
+        for d in found])
+
+
 class VisionSynthNode(object):
     """Wires a :class:`detector.Detector` to ROS topics.
 
@@ -80,6 +97,7 @@ class VisionSynthNode(object):
         self._intrinsics = None
         self._image = None  # (stamp, rgb) of the latest image, with use_image
         self._pub = rospy.Publisher('jason/perception', Perception, queue_size=1)
+        self._seen_pub = rospy.Publisher('robots_seen', RobotSightings, queue_size=1)
         rospy.Subscriber('camera/rgb/camera_info', CameraInfo, self._on_info, queue_size=1)
         if use_image:
             rospy.Subscriber('camera/rgb/image_raw', Image, self._on_image, queue_size=1,
@@ -119,7 +137,7 @@ class VisionSynthNode(object):
 
     def _on_cloud(self, msg):
         start = time.perf_counter()
-        literals = []
+        literals, found = [], []
         try:
             rgb, xyz = self._frame(msg)
             with self._lock:
@@ -128,8 +146,9 @@ class VisionSynthNode(object):
             literals = [d.literal() for d in found]
         except ValueError as e:  # CloudError, FrameError, bad literal values
             rospy.logwarn_throttle(WARN_PERIOD, 'vision_synth: unusable frame: %s' % e)
-            literals = []
+            literals, found = [], []
         self._pub.publish(Perception(source=self._source, perception=literals))
+        self._seen_pub.publish(sightings_message(msg.header, found))
         rospy.logdebug_throttle(WARN_PERIOD, 'vision_synth: %.1f ms per frame; %s'
                                 % ((time.perf_counter() - start) * 1e3, literals))
 
