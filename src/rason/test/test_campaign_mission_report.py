@@ -90,6 +90,16 @@ def test_goals_not_met_by_a_partial_campaign_with_failures():
     assert 'none recovery: 2' in goals[3]['detail']
 
 
+def test_goals_of_a_campaign_without_faults_name_what_was_not_run():
+    goals = mission_report.goals([result(1, 'none', 'recovery', True, 20.0, 0.04),
+                                  result(1, 'none', 'baseline', True, 19.0, 0.05)])
+    assert goals[0]['detail'] == ('none 1/1; not run: left_actuator, right_actuator, '
+                                  'both_actuators, odometry')
+    assert goals[1]['detail'] == ('not run: left_actuator, right_actuator, both_actuators, '
+                                  'odometry')
+    assert not goals[1]['met']
+
+
 def full_campaign(runs=10, recovery_done=None, baseline_done=0):
     """runs per fault and arm; recovery_done / baseline_done of them completed."""
     out = []
@@ -123,20 +133,22 @@ def test_markdown_report():
     text = mission_report.markdown(META, results(), {'completion': 'completion.png'})
     lines = text.splitlines()
     assert lines[0] == '# Fault-tolerance campaign'
-    assert '| Fault | Arm | Runs | Completed | Rate (95 % CI) | Wrong diagnoses | Median time (s) ' \
-           '| p90 time (s) | vs none (s) | Median goal error (m) | Max goal error (m) |' in lines
+    assert '| Fault | Arm | Runs | Completed | Rate (95 % CI) | Wrong diagnoses | Median time ' \
+           '(s) | p90 time (s) | vs none (s) | Median goal error (m) | Max goal error (m) |' \
+        in lines
     assert '| left_actuator | recovery | 2 | 1 | 50 % (9 %–91 %) | 0 | 50.0 | 50.0 | ' \
            '+29.0 (×2.38) | 0.145 | 0.210 |' in lines
-    assert '| left_actuator | baseline | 2 | 0 | 0 % (0 %–66 %) | 1 | — | — | — | — | — |' in lines
+    assert '| left_actuator | baseline | 2 | 0 | 0 % (0 %–66 %) | 1 | — | — | — | — | — |' \
+        in lines
     assert '| none | recovery | 2 | 2 | 100 % (34 %–100 %) | 0 | 21.0 | 21.8 | +0.0 (×1.00) | ' \
            '0.050 | 0.060 |' in lines
     assert '| 0 wrong diagnoses (false positives included) | **no** | 1 wrong of 8 runs; ' \
            'run 4 baseline: none |' in lines
     assert 'All goals met: no.' in lines
-    assert '| 4 | 1004 | left_actuator | recovery | left_actuator | compensate | faulty | no | — ' \
-           '| 0.210 | — | goal missed by 0.210 m (> 0.15 m) |' in lines
-    assert '| 4 | 1004 | left_actuator | baseline | none (wrong) | none | — | no | — | — | — ' \
-           '| stopped |' in lines
+    assert '| 4 | 1004 | left_actuator | recovery | left_actuator | compensate | faulty | no ' \
+           '| — | 0.210 | — | goal missed by 0.210 m (> 0.15 m) |' in lines
+    assert '| 4 | 1004 | left_actuator | baseline | none (wrong) | none | — | no | — | — ' \
+           '| — | stopped |' in lines
     assert 'fault injected at the start' in text
     assert '![Completion rate per fault](completion.png)' in lines
     assert 'Time to completion per fault' not in text     # no times figure given

@@ -85,8 +85,13 @@ def _goal(text, met, detail):
     return {'goal': text, 'met': met, 'detail': detail}
 
 
-def _rate(row):
-    return '%d/%d' % (row['completed'], row['runs'])
+def _rates(by, faults, arm, missing):
+    """'none 10/10, left_actuator 9/10; not run: odometry'."""
+    parts = [', '.join('%s %d/%d' % (f, by[(f, arm)]['completed'], by[(f, arm)]['runs'])
+                       for f in faults if (f, arm) in by)]
+    if missing:
+        parts.append('not run: %s' % ', '.join(missing))
+    return '; '.join(p for p in parts if p)
 
 
 def goals(results, rows=None):
@@ -100,23 +105,18 @@ def goals(results, rows=None):
     out = []
 
     missing = [f for f in FAULTS if (f, 'recovery') not in by]
-    low = [f for f in FAULTS if (f, 'recovery') in by and by[(f, 'recovery')]['rate'] < TARGET_RECOVERY]
-    detail = ', '.join('%s %s' % (f, _rate(by[(f, 'recovery')])) for f in FAULTS
-                       if (f, 'recovery') in by)
-    if missing:
-        detail += '; not run: %s' % ', '.join(missing)
-    out.append(_goal('completion ≥ %.0f %% for every fault with recovery' % (100 * TARGET_RECOVERY),
-                     not missing and not low, detail))
+    low = [f for f in FAULTS if (f, 'recovery') in by
+           and by[(f, 'recovery')]['rate'] < TARGET_RECOVERY]
+    out.append(_goal('completion ≥ %.0f %% for every fault with recovery'
+                     % (100 * TARGET_RECOVERY),
+                     not missing and not low, _rates(by, FAULTS, 'recovery', missing)))
 
     faults = [f for f in FAULTS if f != 'none']
     missing = [f for f in faults if (f, 'baseline') not in by]
-    high = [f for f in faults if (f, 'baseline') in by and by[(f, 'baseline')]['rate'] > TARGET_BASELINE]
-    detail = ', '.join('%s %s' % (f, _rate(by[(f, 'baseline')])) for f in faults
-                       if (f, 'baseline') in by)
-    if missing:
-        detail += '; not run: %s' % ', '.join(missing)
+    high = [f for f in faults if (f, 'baseline') in by
+            and by[(f, 'baseline')]['rate'] > TARGET_BASELINE]
     out.append(_goal('baseline (thesis behaviour) completes 0 % under the four faults',
-                     not missing and not high, detail))
+                     not missing and not high, _rates(by, faults, 'baseline', missing)))
 
     wrong = [r for r in results if r['diagnosis_outcome'] == 'wrong']
     out.append(_goal('0 wrong diagnoses (false positives included)', not wrong,
@@ -168,13 +168,14 @@ def runs_table(results):
     """Markdown lines: a row per run."""
     header = ['Run', 'Seed', 'Fault', 'Arm', 'Diagnosis', 'Recovery', 'By', 'Completed',
               'Time (s)', 'Goal error (m)', 'Start error (m)', 'Note']
-    body = [[r['number'], r['seed'], r['fault'], r['arm'],
-             '%s%s' % (r['diagnosis'] or DASH,
-                       '' if r['diagnosis_outcome'] == 'correct' else ' (%s)' % r['diagnosis_outcome']),
-             r['recovery'] or DASH, ','.join(r['by']) or DASH,
-             'yes' if r['completed'] else 'no', fmt(r['time'], 1), fmt(r['goal_error'], 3),
-             fmt(r['start_error'], 3), '' if r['completed'] and not r.get('timed_out') else r['reason']]
-            for r in results]
+    body = []
+    for r in results:
+        outcome = '' if r['diagnosis_outcome'] == 'correct' else ' (%s)' % r['diagnosis_outcome']
+        note = '' if r['completed'] and not r.get('timed_out') else r['reason']
+        body.append([r['number'], r['seed'], r['fault'], r['arm'],
+                     (r['diagnosis'] or DASH) + outcome, r['recovery'] or DASH,
+                     ','.join(r['by']) or DASH, 'yes' if r['completed'] else 'no',
+                     fmt(r['time'], 1), fmt(r['goal_error'], 3), fmt(r['start_error'], 3), note])
     return table(header, body)
 
 
@@ -200,7 +201,8 @@ def markdown(meta, results, figures):
              'Arms: *recovery* = `fault_tolerance.launch` (diagnosis, then recovery); '
              '*baseline* = `faulty_helper.launch` with the same arguments (the thesis\'s '
              'behaviour: diagnose and stop). Start poses are random per seed: Helper–Faulty '
-             '1.2–2.2 m, Faulty facing away from Helper within ±25°, Helper\'s heading anywhere.',
+             '1.2–2.2 m, Faulty facing away from Helper within ±25°, Helper\'s heading '
+             'anywhere.',
              '',
              'Times are simulated seconds (the recorded /clock), from Faulty\'s first `move` to '
              'the `rason/mission` status (baseline: to its diagnosis when it ends its mission '
