@@ -1,21 +1,33 @@
-"""Read a run's bag into the events ``steps.extract_steps`` takes (needs rosbag, no master)."""
+"""Read a run's bag into the events ``steps.extract_steps`` and ``mission.judge_mission``
+take (needs rosbag, no master)."""
+import math
 import os
 
-from diagnosis_reporter.report import STATUS_NAME
+from diagnosis_reporter.report import MISSION_STATUS_NAME, STATUS_NAME
 
 ACTION_TOPIC = '/%s/jason/action'
+TRUE_POSE_TOPIC = '/%s/true_pose'
 MESSAGES_TOPIC = '/rason/messages'
 DIAGNOSTICS_TOPIC = '/diagnostics'
 CLOCK_TOPIC = '/clock'
 ROBOTS = ('faulty', 'helper')
+STATUS_KINDS = {STATUS_NAME: 'diagnosis', MISSION_STATUS_NAME: 'mission'}
 
 
 class BagError(IOError):
     """The bag cannot be read; the message says why."""
 
 
-def read_events(path):
-    """Events of the bag at ``path``, times in simulated seconds (via /clock).
+def planar(pose):
+    """(x, y, yaw) of a geometry_msgs/Pose."""
+    p, q = pose.position, pose.orientation
+    return p.x, p.y, math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
+
+
+def read_events(path, poses=False):
+    """Events of the bag at ``path``, times in simulated seconds (via /clock): actions,
+    messages, the ``rason/diagnosis`` ('diagnosis') and ``rason/mission`` ('mission')
+    statuses and, with ``poses``, the simulator's true poses ('pose': robot, x, y, yaw).
 
     :rtype: list of (t, kind, fields)
     :raises BagError: when the bag is missing or unreadable.
@@ -25,7 +37,9 @@ def read_events(path):
     if not os.path.exists(path):
         raise BagError('no bag %s' % path)
     action_topics = {ACTION_TOPIC % r: r for r in ROBOTS}
-    topics = list(action_topics) + [MESSAGES_TOPIC, DIAGNOSTICS_TOPIC, CLOCK_TOPIC]
+    pose_topics = {TRUE_POSE_TOPIC % r: r for r in ROBOTS} if poses else {}
+    topics = list(action_topics) + list(pose_topics) + [MESSAGES_TOPIC, DIAGNOSTICS_TOPIC,
+                                                        CLOCK_TOPIC]
     clock, raw = [], []
     try:
         with rosbag.Bag(path) as bag:
@@ -37,15 +51,20 @@ def read_events(path):
                     raw.append((t, 'action', {'robot': action_topics[topic], 'agent': msg.agent,
                                               'action': msg.action,
                                               'parameters': list(msg.parameters)}))
+                elif topic in pose_topics:
+                    x, y, yaw = planar(msg.pose)
+                    raw.append((t, 'pose', {'robot': pose_topics[topic], 'x': x, 'y': y,
+                                            'yaw': yaw}))
                 elif topic == MESSAGES_TOPIC:
                     raw.append((t, 'message', {'sender': msg.sender, 'receiver': msg.receiver,
                                                'performative': msg.performative,
                                                'content': msg.content}))
                 else:
                     for status in msg.status:
-                        if status.name == STATUS_NAME:
+                        kind = STATUS_KINDS.get(status.name)
+                        if kind:
                             fields = {kv.key: kv.value for kv in status.values}
-                            raw.append((t, 'diagnosis', fields))
+                            raw.append((t, kind, fields))
     except (rosbag.ROSBagException, OSError) as e:
         raise BagError('cannot read %s: %s' % (path, e))
     to_sim = clock_mapper(clock)

@@ -1,10 +1,12 @@
 """``rosrun rason campaign``: run the case study per fault, then report.
 
     rosrun rason campaign --faults all --runs 5 --seed 1 --out results/campaign
+    rosrun rason campaign --scenario fault_tolerance --runs 10 --out results/fault_tolerance
 
-Writes into --out: plan.json, report.md, results.json and the PNG figures; the bags, the
-launch logs and each run's record go to --bags (default: <out>/bags). --analyze-only
-makes the report again from what --out and --bags hold.
+Writes into --out: plan.json, report.md, results.json and the PNG figures (the
+fault-tolerance scenario also summary.csv and runs.csv); the bags, the launch logs and each
+run's record go to --bags (default: <out>/bags). --analyze-only makes the report again from
+what --out and --bags hold.
 """
 import argparse
 import datetime
@@ -14,13 +16,23 @@ import shlex
 import sys
 import time
 
-from rason_campaign import figures, plan, report, stats, steps
+from rason_campaign import (figures, mission, mission_figures, mission_report, plan, report,
+                            stats, steps)
 
 PLAN_FILE = 'plan.json'
+# Wall seconds before a run is stopped, per scenario: a recovery (a delegated mission above
+# all) takes longer than the diagnosis alone.
+TIMEOUTS = {'diagnosis': 240.0, 'fault_tolerance': 420.0}
 
 
 def parse_args(argv):
     p = argparse.ArgumentParser(prog='campaign', description=__doc__.split('\n\n')[0])
+    p.add_argument('--scenario', default='diagnosis', choices=plan.SCENARIOS,
+                   help='diagnosis (the thesis\'s case study, default) or fault_tolerance '
+                   '(each run with recovery and as the thesis\'s baseline)')
+    p.add_argument('--fault-at', type=float, default=0.0,
+                   help='fault_tolerance: inject the fault this many seconds after Faulty '
+                   'first moves (default 0: at the start)')
     p.add_argument('--faults', default='all', help='all, or a comma list of %s' %
                    ', '.join(plan.FAULTS))
     p.add_argument('--runs', type=int, default=5, help='runs per fault (default 5)')
@@ -31,15 +43,23 @@ def parse_args(argv):
     p.add_argument('--interaction', default='none', choices=sorted(plan.INTERACTIONS),
                    help='interaction fault of thesis §7.5-7.6 (default none)')
     p.add_argument('--no-jitter', action='store_true',
-                   help='nominal start poses and brightness in every run')
-    p.add_argument('--timeout', type=float, default=240.0,
-                   help='wall seconds before a run is stopped (default 240)')
+                   help='diagnosis: nominal start poses and brightness in every run')
+    p.add_argument('--timeout', type=float,
+                   help='wall seconds before a run is stopped (default %s)' % ', '.join(
+                       '%.0f for %s' % (t, s) for s, t in sorted(TIMEOUTS.items())))
     p.add_argument('--port', type=int, default=11611,
                    help='first ROS master port to try (default 11611)')
     p.add_argument('--images', action='store_true', help='bags also hold the camera images')
     p.add_argument('--analyze-only', action='store_true',
                    help='no runs: report again from the bags in --bags')
-    return p.parse_args(argv)
+    args = p.parse_args(argv)
+    if args.timeout is None:
+        args.timeout = TIMEOUTS[args.scenario]
+    if args.fault_at and args.scenario != 'fault_tolerance':
+        p.error('--fault-at is for --scenario fault_tolerance')
+    if args.no_jitter and args.scenario != 'diagnosis':
+        p.error('--no-jitter is for --scenario diagnosis (fault_tolerance spreads the poses)')
+    return args
 
 
 def analyze(spec, record, read_events):
@@ -62,6 +82,25 @@ def analyze(spec, record, read_events):
     return result
 
 
+def analyze_mission(spec, record, read_events):
+    """Result dict of one fault-tolerance run from its record (runner.RunRecord or None)
+    and its bag; ``read_events(path, poses=True)`` reads the bag."""
+    failure = record.failure if record else 'the run was never made'
+    events = []
+    if record is not None:
+        try:
+            events = read_events(record.bag, poses=True)
+        except IOError as e:
+            failure = '%s; %s' % (failure, e) if failure else str(e)
+    outcome = mission.judge_mission(spec.fault, spec.arm, events, failure)
+    result = spec.to_dict()
+    result.update(outcome.to_dict())
+    result.update({'wall': record.wall if record else None,
+                   'exit_code': record.exit_code if record else None,
+                   'timed_out': record.timed_out if record else None})
+    return result
+
+
 def progress_start(spec, total):
     return '[%d/%d] %s seed=%d ... ' % (spec.number, total, spec.fault, spec.seed)
 
@@ -75,6 +114,30 @@ def progress_end(result):
     return '%s%s%s%s' % (result['outcome'], took, wall, why)
 
 
+def mission_progress_start(index, spec, total):
+    return '[%d/%d] %s seed=%d %s ... ' % (index, total, spec.fault, spec.seed, spec.arm)
+
+
+def mission_progress_end(result):
+    """e.g. 'completed by faulty (compensate) in 41.2 s, goal error 0.052 m (wall 60 s)';
+    the reason when not completed."""
+    wall = ' (wall %.0f s)' % result['wall'] if result['wall'] is not None else ''
+    if not result['completed']:
+        return 'not completed: %s%s' % (result['reason'], wall)
+    return 'completed by %s (%s) in %.1f s, goal error %.3f m%s' % (
+        ','.join(result['by']), result['recovery'], result['time'], result['goal_error'], wall)
+
+
+def write_mission_report(out, meta, results):
+    names = mission_figures.make_all(results, out)
+    for name, text in (('report.md', mission_report.markdown(meta, results, names)),
+                       ('results.json', mission_report.results_json(meta, results)),
+                       ('summary.csv', mission_report.summary_csv(results)),
+                       ('runs.csv', mission_report.runs_csv(results))):
+        with open(os.path.join(out, name), 'w') as f:
+            f.write(text)
+
+
 def write_report(out, meta, results):
     names = figures.make_all(results, out)
     with open(os.path.join(out, 'report.md'), 'w') as f:
@@ -84,7 +147,8 @@ def write_report(out, meta, results):
 
 
 def main(argv=None):
-    """The campaign command; exits with status 1 when a run was diagnosed wrongly."""
+    """The campaign command; exits with status 1 when a run was diagnosed wrongly. The
+    scenario of --analyze-only is the one plan.json was made for."""
     from rason_campaign import bagread, runner  # ROS only here
     args = parse_args(sys.argv[1:] if argv is None else argv)
     bags = args.bags or os.path.join(args.out, 'bags')
@@ -96,9 +160,13 @@ def main(argv=None):
         meta, specs = saved['meta'], [plan.RunSpec.from_dict(d) for d in saved['runs']]
     else:
         try:
-            specs = plan.make_plan(plan.parse_faults(args.faults), args.runs, args.seed,
-                                   args.interaction, args.rate, args.images,
-                                   jitter=not args.no_jitter)
+            faults = plan.parse_faults(args.faults)
+            if args.scenario == 'fault_tolerance':
+                specs = plan.make_mission_plan(faults, args.runs, args.seed, args.fault_at,
+                                               args.interaction, args.rate, args.images)
+            else:
+                specs = plan.make_plan(faults, args.runs, args.seed, args.interaction,
+                                       args.rate, args.images, jitter=not args.no_jitter)
         except plan.PlanError as e:
             sys.exit('campaign: %s' % e)
         meta = {'command': 'rosrun rason campaign ' + ' '.join(
@@ -106,8 +174,13 @@ def main(argv=None):
                 'date': datetime.date.today().isoformat(), 'runs': args.runs,
                 'seed': args.seed, 'rate': args.rate, 'interaction': args.interaction,
                 'jitter': not args.no_jitter, 'timeout': args.timeout}
+        if args.scenario != 'diagnosis':  # a diagnosis plan.json stays what it was
+            del meta['jitter']            # the poses are spread by poses.spread_poses
+            meta.update({'scenario': args.scenario, 'fault_at': args.fault_at})
         with open(plan_path, 'w') as f:
             json.dump({'meta': meta, 'runs': [s.to_dict() for s in specs]}, f, indent=1)
+    if meta.get('scenario', 'diagnosis') == 'fault_tolerance':
+        sys.exit(run_missions(args, meta, specs, bags, runner, bagread))
     results = []
     t0 = time.monotonic()
     for spec in specs:
@@ -126,3 +199,31 @@ def main(argv=None):
           % (s['counts']['correct'], s['counts']['undiagnosed'], s['counts']['wrong'],
              s['runs'], time.monotonic() - t0, os.path.join(args.out, 'report.md')))
     sys.exit(0 if s['counts']['wrong'] == 0 else 1)
+
+
+def run_missions(args, meta, specs, bags, runner, bagread):
+    """The fault-tolerance campaign's runs (or, with --analyze-only, their bags) and
+    report.
+
+    :returns: the exit status: 1 when a run was diagnosed wrongly, else 0"""
+    results = []
+    t0 = time.monotonic()
+    for index, spec in enumerate(specs, 1):
+        record_path = os.path.join(bags, spec.name + '.run.json')
+        print(mission_progress_start(index, spec, len(specs)), end='', flush=True)
+        if args.analyze_only:
+            record = runner.RunRecord.load(record_path) if os.path.exists(record_path) else None
+        else:
+            record = runner.run(spec, bags, args.timeout, args.port)
+        result = analyze_mission(spec, record, bagread.read_events)
+        results.append(result)
+        print(mission_progress_end(result), flush=True)
+    write_mission_report(args.out, meta, results)
+    rows = mission_report.summary(results)
+    wrong = sum(r['wrong'] for r in rows)
+    met = all(g['met'] for g in mission_report.goals(results, rows))
+    print('campaign: %d of %d runs completed, %d wrong diagnoses, in %.0f s; acceptance goals '
+          '%s; report %s' % (sum(r['completed'] for r in rows), len(results), wrong,
+                             time.monotonic() - t0, 'met' if met else 'not met',
+                             os.path.join(args.out, 'report.md')))
+    return 0 if wrong == 0 else 1

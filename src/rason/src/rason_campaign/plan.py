@@ -3,9 +3,17 @@
 Deterministic: the same (faults, runs, seed, options) give the same plan. Each run has its
 own seed (``seed * 1000 + run number``) which seeds both the simulator and the run's
 jitter of the start poses (about ±5 cm, ±3°) and of the lighting (brightness 0.8-1.2).
+
+Two scenarios: ``diagnosis`` (the thesis's case study, faulty_helper.launch) and
+``fault_tolerance`` (issue 15), where each planned run is made twice with the same seed and
+start poses (spread out by :mod:`rason_campaign.poses`): the ``recovery`` arm
+(fault_tolerance.launch) and the ``baseline`` arm (faulty_helper.launch: the thesis's
+behaviour, diagnose and stop).
 """
 import math
 import random
+
+from rason_campaign.poses import spread_poses
 
 FAULTS = ('none', 'left_actuator', 'right_actuator', 'both_actuators', 'odometry')
 
@@ -26,32 +34,51 @@ INTERACTIONS = {
 }
 
 
+SCENARIOS = ('diagnosis', 'fault_tolerance')
+# Arm of a fault-tolerance run -> the launch file it runs; a diagnosis run has no arm.
+ARMS = ('recovery', 'baseline')
+LAUNCHES = {None: 'faulty_helper.launch', 'recovery': 'fault_tolerance.launch',
+            'baseline': 'faulty_helper.launch'}
+
+
 class PlanError(ValueError):
     """The campaign's options do not make a plan; the message says why."""
 
 
 class RunSpec(object):
-    """One run: its number (1-based, over the whole campaign), fault, seed and the launch
-    arguments of faulty_helper.launch (without record/bag, which the runner adds)."""
+    """One run: its number (1-based, over the whole campaign; both arms of a fault-tolerance
+    run share it), fault, seed, the launch arguments (without record/bag, which the runner
+    adds) and, in the fault-tolerance scenario, its arm (``recovery`` or ``baseline``)."""
 
-    def __init__(self, number, fault, seed, args):
+    def __init__(self, number, fault, seed, args, arm=None):
         self.number = number
         self.fault = fault
         self.seed = seed
         self.args = args
+        self.arm = arm
 
     @property
     def name(self):
-        """File-name stem of the run, e.g. ``007_left_actuator_1007``."""
-        return '%03d_%s_%d' % (self.number, self.fault, self.seed)
+        """File-name stem of the run, e.g. ``007_left_actuator_1007`` or
+        ``007_left_actuator_1007_baseline``."""
+        stem = '%03d_%s_%d' % (self.number, self.fault, self.seed)
+        return stem if self.arm is None else '%s_%s' % (stem, self.arm)
+
+    @property
+    def launch(self):
+        """(package, launch file) the run starts."""
+        return ('rason', LAUNCHES[self.arm])
 
     def to_dict(self):
-        return {'number': self.number, 'fault': self.fault, 'seed': self.seed,
-                'args': dict(self.args)}
+        d = {'number': self.number, 'fault': self.fault, 'seed': self.seed,
+             'args': dict(self.args)}
+        if self.arm is not None:  # a diagnosis run's dict stays what it was
+            d['arm'] = self.arm
+        return d
 
     @classmethod
     def from_dict(cls, d):
-        return cls(d['number'], d['fault'], d['seed'], dict(d['args']))
+        return cls(d['number'], d['fault'], d['seed'], dict(d['args']), d.get('arm'))
 
     def __eq__(self, other):
         return isinstance(other, RunSpec) and self.to_dict() == other.to_dict()
@@ -124,6 +151,39 @@ def make_plan(faults, runs, seed, interaction='none', rate=1.0, images=False, ji
                          'interaction': interaction,
                          'images': 'true' if images else 'false'})
             plan.append(RunSpec(number, fault, run_seed, args))
+    return plan
+
+
+def make_mission_plan(faults, runs, seed, fault_at=0.0, interaction='none', rate=1.0,
+                      images=False):
+    """The fault-tolerance campaign's runs: ``runs`` per fault, each made in both ARMS one
+    after the other (recovery first) with the same seed ``seed * 1000 + k`` and the same
+    start poses, drawn by :func:`rason_campaign.poses.spread_poses` from that seed.
+
+    :param fault_at: seconds after Faulty first moves at which the fault is injected
+        (0: at the start), in both arms
+    :rtype: list of RunSpec (2 * len(faults) * runs)
+    :raises PlanError: on bad options.
+    """
+    if runs < 1:
+        raise PlanError('--runs must be at least 1, got %d' % runs)
+    if interaction not in INTERACTIONS:
+        raise PlanError('unknown interaction fault %r; expected one of %s'
+                        % (interaction, ', '.join(INTERACTIONS)))
+    if rate < 0:
+        raise PlanError('--rate must be >= 0, got %s' % rate)
+    if not fault_at >= 0 or math.isinf(fault_at):  # also refuses NaN
+        raise PlanError('--fault-at must be a number of seconds >= 0, got %s' % fault_at)
+    plan = []
+    number = 0
+    for fault in faults:
+        for _ in range(runs):
+            number += 1
+            run_seed = seed * 1000 + number
+            args = spread_poses(run_seed)
+            args.update({'fault': fault, 'fault_at': fault_at, 'seed': run_seed, 'rate': rate,
+                         'interaction': interaction, 'images': 'true' if images else 'false'})
+            plan += [RunSpec(number, fault, run_seed, dict(args), arm) for arm in ARMS]
     return plan
 
 

@@ -23,7 +23,7 @@ def _row(cells):
     return '| ' + ' | '.join(str(c) for c in cells) + ' |'
 
 
-def _table(header, rows):
+def table(header, rows):
     lines = [_row(header), _row(['---'] * len(header))]
     return lines + [_row(r) for r in rows]
 
@@ -48,7 +48,7 @@ def summary_table(summary):
     c = summary['counts']
     rows.append(['**all**', summary['runs'], c['correct'], c['undiagnosed'], c['wrong']] +
                 [''] * len(STEP_NAMES) + [''])
-    return _table(header, rows)
+    return table(header, rows)
 
 
 def fault_table(fault, results, fault_summary):
@@ -64,7 +64,7 @@ def fault_table(fault, results, fault_summary):
     if means:
         rows.append(['Thesis mean', 'Table %s' % thesis.TABLES[fault][0]] +
                     [fmt(m) for m in means] + ['', ''])
-    return _table(header, rows)
+    return table(header, rows)
 
 
 def markdown(meta, results, figures):
@@ -100,8 +100,9 @@ def markdown(meta, results, figures):
         if name in figures:
             lines += ['![%s](%s)' % (title, figures[name]), '']
     for fault, rs in stats.by_fault(results).items():
-        table = thesis.TABLES.get(fault)
-        lines += ['## %s%s' % (fault, ' (thesis Table %s)' % table[0] if table else ''), '']
+        thesis_table = thesis.TABLES.get(fault)
+        lines += ['## %s%s' % (fault, ' (thesis Table %s)' % thesis_table[0]
+                               if thesis_table else ''), '']
         lines += fault_table(fault, rs, summary['faults'][fault])
         notes = ['- Run %d: %s — %s' % (r['number'], r['outcome'], r['reason'])
                  for r in rs if r['outcome'] != 'correct']

@@ -1,5 +1,6 @@
-"""Running one campaign run: ``roslaunch rason faulty_helper.launch`` on a master of its
-own, with a wall-clock timeout after which the whole launch is stopped.
+"""Running one campaign run: ``roslaunch rason faulty_helper.launch`` (or the launch file of
+the run's arm, ``RunSpec.launch``) on a master of its own, with a wall-clock timeout after
+which the whole launch is stopped.
 
 :class:`PrivateMaster` (a ``roscore`` on a free port, stopped by its PID) is also what
 ``rason_bench`` starts its benchmarks on."""
@@ -12,8 +13,6 @@ import time
 import xmlrpc.client
 
 from rason_campaign.plan import launch_arguments
-
-LAUNCH = ('rason', 'faulty_helper.launch')
 
 
 class RunRecord(object):
@@ -220,7 +219,7 @@ def run(spec, bag_dir, timeout, base_port=11611):
     for stale in (bag, bag + '.active'):
         if os.path.exists(stale):
             os.remove(stale)
-    cmd = ['roslaunch'] + list(LAUNCH) + launch_arguments(spec, bag)
+    cmd = ['roslaunch'] + list(spec.launch) + launch_arguments(spec, bag)
     with open(log, 'w') as out:
         out.write(' '.join(cmd) + '\n')
     timed_out = False

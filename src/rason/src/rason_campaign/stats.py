@@ -53,3 +53,39 @@ def summary(results):
     n = len(results)
     return {'faults': faults, 'counts': total, 'runs': n,
             'correct_fraction': total['correct'] / n if n else None}
+
+
+def wilson(successes, n, z=1.96):
+    """Wilson score interval of a proportion (95 % for z = 1.96): unlike p ± z·se it stays
+    inside [0, 1] and is not empty at 0 or n successes, which is where a campaign's rates
+    are. (None, None) when n is 0.
+
+    :rtype: (float or None, float or None)
+    """
+    if n <= 0:
+        return None, None
+    p = successes / n
+    denominator = 1 + z * z / n
+    centre = (p + z * z / (2 * n)) / denominator
+    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / denominator
+    return max(0.0, centre - half), min(1.0, centre + half)
+
+
+def percentile(values, q):
+    """The q-th percentile (0-100) of the values that are not None, interpolated linearly
+    between the closest ranks; None when there are none.
+
+    :rtype: float or None
+    """
+    values = sorted(v for v in values if v is not None)
+    if not values:
+        return None
+    position = (len(values) - 1) * q / 100.0
+    low = int(math.floor(position))
+    high = min(low + 1, len(values) - 1)
+    return values[low] + (values[high] - values[low]) * (position - low)
+
+
+def median(values):
+    """The median of the values that are not None, or None."""
+    return percentile(values, 50)
