@@ -115,13 +115,15 @@ class TestFaultTolerance(unittest.TestCase):
         self.assertLessEqual(run.closest[by], tolerance,
                              '%s came no closer than %.3f m to the goal %s; %s'
                              % (by, run.closest[by], run.goal, context))
+        back = None
         if by == 'faulty':
             x, y, _ = run.at_end['faulty']
             back = math.hypot(x - run.start[0], y - run.start[1])
             self.assertLessEqual(back, tolerance, 'Faulty ended %.3f m from its start %s; %s'
                                  % (back, run.start[:2], context))
-        rospy.loginfo('fault tolerance: %s: goal reached by %s within %.3f m', diagnosis, by,
-                      run.closest[by])
+        rospy.loginfo('fault tolerance: %s, %s: goal reached by %s within %.3f m%s', diagnosis,
+                      recovery, by, run.closest[by],
+                      '' if back is None else ', back %.3f m from the start' % back)
 
 
 if __name__ == '__main__':
