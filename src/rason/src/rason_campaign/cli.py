@@ -181,18 +181,11 @@ def main(argv=None):
             json.dump({'meta': meta, 'runs': [s.to_dict() for s in specs]}, f, indent=1)
     if meta.get('scenario', 'diagnosis') == 'fault_tolerance':
         sys.exit(run_missions(args, meta, specs, bags, runner, bagread))
-    results = []
     t0 = time.monotonic()
-    for spec in specs:
-        record_path = os.path.join(bags, spec.name + '.run.json')
-        print(progress_start(spec, len(specs)), end='', flush=True)
-        if args.analyze_only:
-            record = runner.RunRecord.load(record_path) if os.path.exists(record_path) else None
-        else:
-            record = runner.run(spec, bags, args.timeout, args.port)
-        result = analyze(spec, record, bagread.read_events)
-        results.append(result)
-        print(progress_end(result), flush=True)
+    results = run_all(args, specs, bags, runner,
+                      lambda _index, spec: progress_start(spec, len(specs)),
+                      lambda spec, record: analyze(spec, record, bagread.read_events),
+                      progress_end)
     write_report(args.out, meta, results)
     s = stats.summary(results)
     print('campaign: %d correct, %d undiagnosed, %d wrong of %d runs in %.0f s; report %s'
@@ -201,23 +194,37 @@ def main(argv=None):
     sys.exit(0 if s['counts']['wrong'] == 0 else 1)
 
 
+def run_all(args, specs, bags, runner, start_line, analyze_run, end_line):
+    """Runs each spec (or, with --analyze-only, loads its record), analyses it and prints its
+    progress line; returns the results in order.
+
+    :param start_line: (index from 1, spec) -> the text printed before the run
+    :param analyze_run: (spec, record or None) -> the run's result
+    :param end_line: result -> the text that ends the line"""
+    results = []
+    for index, spec in enumerate(specs, 1):
+        record_path = os.path.join(bags, spec.name + '.run.json')
+        print(start_line(index, spec), end='', flush=True)
+        if args.analyze_only:
+            record = runner.RunRecord.load(record_path) if os.path.exists(record_path) else None
+        else:
+            record = runner.run(spec, bags, args.timeout, args.port)
+        result = analyze_run(spec, record)
+        results.append(result)
+        print(end_line(result), flush=True)
+    return results
+
+
 def run_missions(args, meta, specs, bags, runner, bagread):
     """The fault-tolerance campaign's runs (or, with --analyze-only, their bags) and
     report.
 
     :returns: the exit status: 1 when a run was diagnosed wrongly, else 0"""
-    results = []
     t0 = time.monotonic()
-    for index, spec in enumerate(specs, 1):
-        record_path = os.path.join(bags, spec.name + '.run.json')
-        print(mission_progress_start(index, spec, len(specs)), end='', flush=True)
-        if args.analyze_only:
-            record = runner.RunRecord.load(record_path) if os.path.exists(record_path) else None
-        else:
-            record = runner.run(spec, bags, args.timeout, args.port)
-        result = analyze_mission(spec, record, bagread.read_events)
-        results.append(result)
-        print(mission_progress_end(result), flush=True)
+    results = run_all(args, specs, bags, runner,
+                      lambda index, spec: mission_progress_start(index, spec, len(specs)),
+                      lambda spec, record: analyze_mission(spec, record, bagread.read_events),
+                      mission_progress_end)
     write_mission_report(args.out, meta, results)
     rows = mission_report.summary(results)
     wrong = sum(r['wrong'] for r in rows)

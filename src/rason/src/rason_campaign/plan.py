@@ -122,6 +122,17 @@ def jittered_args(seed, jitter=True):
     return args
 
 
+def _check_options(runs, interaction, rate):
+    # the options both scenarios share; raises PlanError
+    if runs < 1:
+        raise PlanError('--runs must be at least 1, got %d' % runs)
+    if interaction not in INTERACTIONS:
+        raise PlanError('unknown interaction fault %r; expected one of %s'
+                        % (interaction, ', '.join(INTERACTIONS)))
+    if rate < 0:
+        raise PlanError('--rate must be >= 0, got %s' % rate)
+
+
 def make_plan(faults, runs, seed, interaction='none', rate=1.0, images=False, jitter=True):
     """The campaign's runs: ``runs`` per fault, faults in the order given, run numbers
     1..len(faults)*runs, run seed ``seed * 1000 + number``.
@@ -132,13 +143,7 @@ def make_plan(faults, runs, seed, interaction='none', rate=1.0, images=False, ji
     :rtype: list of RunSpec
     :raises PlanError: on bad options.
     """
-    if runs < 1:
-        raise PlanError('--runs must be at least 1, got %d' % runs)
-    if interaction not in INTERACTIONS:
-        raise PlanError('unknown interaction fault %r; expected one of %s'
-                        % (interaction, ', '.join(INTERACTIONS)))
-    if rate < 0:
-        raise PlanError('--rate must be >= 0, got %s' % rate)
+    _check_options(runs, interaction, rate)
     plan = []
     for fault in faults:
         for _ in range(runs):
@@ -165,13 +170,7 @@ def make_mission_plan(faults, runs, seed, fault_at=0.0, interaction='none', rate
     :rtype: list of RunSpec (2 * len(faults) * runs)
     :raises PlanError: on bad options.
     """
-    if runs < 1:
-        raise PlanError('--runs must be at least 1, got %d' % runs)
-    if interaction not in INTERACTIONS:
-        raise PlanError('unknown interaction fault %r; expected one of %s'
-                        % (interaction, ', '.join(INTERACTIONS)))
-    if rate < 0:
-        raise PlanError('--rate must be >= 0, got %s' % rate)
+    _check_options(runs, interaction, rate)
     if not fault_at >= 0 or math.isinf(fault_at):  # also refuses NaN
         raise PlanError('--fault-at must be a number of seconds >= 0, got %s' % fault_at)
     plan = []
