@@ -20,6 +20,7 @@ import rospkg
 import rospy
 from rospy.impl.rosout import RosOutHandler
 from rason_msgs.msg import Action, AgentMessage, Event, Perception, Presence
+from rosgraph_msgs.msg import Clock
 
 from rason_bridge.coalesce import FloodEnd, PerceptionCoalescer
 from rason_bridge.exits import exit_for_shutdown
@@ -230,6 +231,7 @@ class RasonMasNode(object):
         self._outbound_thread.start()
         threading.Thread(target=self._outbox_loop, name='rason_outbox', daemon=True).start()
         threading.Thread(target=self._presence_loop, name='rason_presence', daemon=True).start()
+        self._use_ros_time_for_agents()
         self._bridge.tick(_ros_now_ns())  # the agents' clock is known before their first action
         rospy.Timer(rospy.Duration(0.05), self._on_tick)
         # whatever an earlier run of this node left running stops, before the agents' first action
@@ -314,6 +316,22 @@ class RasonMasNode(object):
 
     def _on_tick(self, _event):
         self._bridge.tick(_ros_now_ns())
+
+    def _use_ros_time_for_agents(self):
+        """Under /use_sim_time, Jason's .wait, .at, deadlines and .send timeouts follow /clock
+        (each message is pushed to Java, so a wait ends within one clock step of its time)."""
+        sim_time = bool(rospy.get_param('/use_sim_time', False))
+        try:
+            self._bridge.agentsOnRosTime(sim_time)
+        except self._jpype.JException as e:
+            rospy.logerr('the agents keep the wall clock for .wait and timeouts: %s', e.getMessage())
+            return
+        if sim_time:
+            rospy.Subscriber('/clock', Clock, self._on_clock, queue_size=1, tcp_nodelay=True)
+            rospy.loginfo('agents on ROS time: .wait and Jason timeouts follow /clock')
+
+    def _on_clock(self, msg):
+        self._bridge.clockAdvanced(msg.clock.to_nsec())
 
     def _on_message(self, msg):
         if msg.sender_mas == self.mas_id or (msg.receiver_mas and msg.receiver_mas != self.mas_id):

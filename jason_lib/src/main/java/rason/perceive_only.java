@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.List;
 
 import jason.JasonException;
-import jason.asSemantics.DefaultInternalAction;
 import jason.asSemantics.TransitionSystem;
 import jason.asSemantics.Unifier;
 import jason.asSyntax.StringTerm;
@@ -20,17 +19,7 @@ import rason.perception.SelectivePerception;
  * strings because Jason's parser reads {@code robot/4} as a division.
  * {@code rason.perceive_all} lifts the selection.
  */
-public class perceive_only extends DefaultInternalAction {
-
-    @Override
-    public int getMinArgs() {
-        return 1;
-    }
-
-    @Override
-    public int getMaxArgs() {
-        return 1;
-    }
+public class perceive_only extends OneArgumentAction {
 
     @Override
     public Object execute(TransitionSystem ts, Unifier un, Term[] args) throws Exception {

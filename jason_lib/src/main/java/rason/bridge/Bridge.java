@@ -46,6 +46,8 @@ public final class Bridge implements Fleet.Listener {
 
     private final AgentRegistry registry = new AgentRegistry();
     private final RosClock clock = new RosClock();
+    private final RosTimeScheduler scheduler = new RosTimeScheduler(clock);
+    private boolean schedulerInstalled = false; // guarded by scheduler
     private final Outbox outbox = new Outbox();
     // at most a few lines per period of each kind of dropped input (wall clock)
     private final RateLimitedLog limited = new RateLimitedLog(logger);
@@ -81,6 +83,31 @@ public final class Bridge implements Fleet.Listener {
 
     public RosClock clock() {
         return clock;
+    }
+
+    public RosTimeScheduler scheduler() {
+        return scheduler;
+    }
+
+    /**
+     * Jason's timing ({@code .wait}, {@code .at}, plan deadlines, {@code .send}
+     * timeouts) follows ROS time (true: /use_sim_time, the clock pushed by
+     * {@link #clockAdvanced}) or the wall clock (false). The first call puts
+     * this bridge's scheduler in Jason, for the whole process.
+     */
+    public void agentsOnRosTime(boolean rosTime) {
+        synchronized (scheduler) {
+            if (!schedulerInstalled) {
+                RosTimeScheduler.installInJason(scheduler);
+                schedulerInstalled = true;
+            }
+        }
+        scheduler.useRosTime(rosTime);
+    }
+
+    /** A /clock message: the ROS time is nowNanos; what Jason scheduled for then is due. */
+    public void clockAdvanced(long nowNanos) {
+        scheduler.advance(nowNanos);
     }
 
     public Outbox outbox() {
@@ -325,7 +352,7 @@ public final class Bridge implements Fleet.Listener {
 
     /** Called periodically with the ROS time: the one clock of timeouts and expiry. */
     public void tick(long nowNanos) {
-        clock.set(nowNanos);
+        scheduler.advance(nowNanos);
         limited.tick(System.nanoTime());
         sources.expire(nowNanos, perceptionTtlNanos);
         for (RosAgArch arch : registry.all())
