@@ -8,8 +8,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 import rason.RosAgArch;
@@ -26,7 +26,8 @@ class AgentThreadTest {
     private static final long WAIT_MS = RunningAgents.WAIT_MS;
 
     private final Bridge bridge = Bridge.get();
-    private final RunningAgents agents = new RunningAgents();
+    @RegisterExtension
+    final RunningAgents agents = new RunningAgents();
 
     @TempDir
     Path dir;
@@ -35,10 +36,6 @@ class AgentThreadTest {
         return agents.start(dir, agent, program);
     }
 
-    @AfterEach
-    void stop() throws Exception {
-        agents.stop();
-    }
 
     private Outbound.Action nextAction() throws InterruptedException {
         return agents.next(Outbound.Action.class);

@@ -13,6 +13,7 @@ import java.util.logging.Logger;
 
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 import rason.RosAgArch;
@@ -24,7 +25,8 @@ class BoundedInputTest {
     @TempDir
     Path dir;
 
-    private final RunningAgents agents = new RunningAgents();
+    @RegisterExtension
+    final RunningAgents agents = new RunningAgents();
     private final Bridge bridge = Bridge.get();
     private final Logger logger = Logger.getLogger("rason.bridge");
     private final List<String> lines = new ArrayList<>();
@@ -44,9 +46,8 @@ class BoundedInputTest {
     };
 
     @AfterEach
-    void stop() throws Exception {
+    void removeLogHandler() throws Exception {
         logger.removeHandler(handler);
-        agents.stop();
     }
 
     private synchronized long linesContaining(String s) {

@@ -9,8 +9,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -29,7 +29,8 @@ class PreemptionTest {
     private static final long WAIT_MS = RunningAgents.WAIT_MS;
 
     private final Bridge bridge = Bridge.get();
-    private final RunningAgents agents = new RunningAgents();
+    @RegisterExtension
+    final RunningAgents agents = new RunningAgents();
 
     @TempDir
     Path dir;
@@ -47,10 +48,6 @@ class PreemptionTest {
         return agents.start(dir, "mover", MOVER + "+stop <- " + takeBack + ".\n");
     }
 
-    @AfterEach
-    void stop() throws Exception {
-        agents.stop();
-    }
 
     private <T extends Outbound> T next(Class<T> kind) throws InterruptedException {
         return agents.next(kind);

@@ -8,6 +8,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.function.BooleanSupplier;
 
+import org.junit.jupiter.api.extension.AfterEachCallback;
+import org.junit.jupiter.api.extension.ExtensionContext;
+
 import jason.asSemantics.Unifier;
 import jason.asSyntax.ASSyntax;
 import rason.RosAgArch;
@@ -17,18 +20,20 @@ import rason.infra.RasonLocalMAS;
  * Real Jason agents on the bridge for a test, with nobody draining the outbox
  * but the test itself: start one agent from its program, look into its
  * beliefs, wait for a condition, and stop everything so that nothing of one
- * test reaches the next.
+ * test reaches the next: registered as an extension
+ * ({@code @RegisterExtension final RunningAgents agents = new RunningAgents();}),
+ * it stops them after each test, after the test class's own {@code @AfterEach}.
  */
-final class RunningAgents {
+public final class RunningAgents implements AfterEachCallback {
 
-    static final long SECOND = 1_000_000_000L;
-    static final long WAIT_MS = 10_000;
+    public static final long SECOND = 1_000_000_000L;
+    public static final long WAIT_MS = 10_000;
 
     private final Bridge bridge = Bridge.get();
     private RasonLocalMAS mas;
 
     /** Starts agent with program (in dir) at ROS time 100 s with a 60 s action timeout. */
-    RosAgArch start(Path dir, String agent, String program) throws Exception {
+    public RosAgArch start(Path dir, String agent, String program) throws Exception {
         Files.writeString(dir.resolve(agent + ".asl"), program);
         Files.writeString(dir.resolve("test.mas2j"), "MAS test { agents: " + agent + "; }");
         bridge.attach();
@@ -46,7 +51,12 @@ final class RunningAgents {
         return arch;
     }
 
-    void stop() throws Exception {
+    @Override
+    public void afterEach(ExtensionContext context) throws Exception {
+        stop();
+    }
+
+    public void stop() throws Exception {
         bridge.shutdown(Protocol.SHUTDOWN);
         if (mas != null)
             assertTrue(mas.stopAgents(5000), "agent threads end");
@@ -56,7 +66,7 @@ final class RunningAgents {
         }
     }
 
-    static boolean believes(RosAgArch arch, String literal) {
+    public static boolean believes(RosAgArch arch, String literal) {
         try {
             return arch.getTS().getAg().believes(ASSyntax.parseLiteral(literal), new Unifier());
         } catch (Exception e) {
@@ -64,7 +74,7 @@ final class RunningAgents {
         }
     }
 
-    static void await(String what, BooleanSupplier condition) throws InterruptedException {
+    public static void await(String what, BooleanSupplier condition) throws InterruptedException {
         long deadline = System.currentTimeMillis() + WAIT_MS;
         while (!condition.getAsBoolean()) {
             if (System.currentTimeMillis() > deadline)
@@ -74,7 +84,7 @@ final class RunningAgents {
     }
 
     /** The next item the agents queued for ROS, of the given kind. */
-    <T extends Outbound> T next(Class<T> kind) throws InterruptedException {
+    public <T extends Outbound> T next(Class<T> kind) throws InterruptedException {
         Outbound item = bridge.outbox().take(WAIT_MS);
         assertNotNull(item, "nothing was queued");
         return assertInstanceOf(kind, item);

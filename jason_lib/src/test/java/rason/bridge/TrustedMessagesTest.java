@@ -8,8 +8,8 @@ import static rason.bridge.RunningAgents.believes;
 
 import java.nio.file.Path;
 
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 import jason.asSyntax.ASSyntax;
@@ -29,15 +29,12 @@ class TrustedMessagesTest {
     private static final String PLAN = "\"+!trick <- +tricked.\"";
 
     private final Bridge bridge = Bridge.get();
-    private final RunningAgents agents = new RunningAgents();
+    @RegisterExtension
+    final RunningAgents agents = new RunningAgents();
 
     @TempDir
     Path dir;
 
-    @AfterEach
-    void stop() throws Exception {
-        agents.stop();
-    }
 
     /** A test key (never used outside tests): both processes of the test share it. */
     private static final String KEY = "test-trust-key-0123456789abcdef0123456789abcdef";
