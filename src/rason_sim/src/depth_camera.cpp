@@ -29,10 +29,12 @@ double kinectSigma(double z) {
 
 void buildFrame(const Intrinsics& k, const uint8_t* rgb_bottom_up, const float* depth_bottom_up,
                 double near, double far, const DepthNoise& noise, std::mt19937& rng,
-                std::vector<uint8_t>& image, std::vector<uint8_t>& cloud) {
+                std::vector<uint8_t>& image, std::vector<uint16_t>& depth_mm,
+                std::vector<uint8_t>* cloud) {
   const int w = k.width, h = k.height;
   image.resize(static_cast<size_t>(w) * h * 3);
-  cloud.resize(static_cast<size_t>(w) * h * kPointStep);
+  depth_mm.resize(static_cast<size_t>(w) * h);
+  if (cloud) cloud->resize(static_cast<size_t>(w) * h * kPointStep);
   std::normal_distribution<float> gauss(0.0f, 1.0f);
   std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
   const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -41,14 +43,18 @@ void buildFrame(const Intrinsics& k, const uint8_t* rgb_bottom_up, const float* 
     const uint8_t* src_rgb = rgb_bottom_up + static_cast<size_t>(src_row) * w * 3;
     std::memcpy(&image[static_cast<size_t>(row) * w * 3], src_rgb, static_cast<size_t>(w) * 3);
     const float* src_depth = depth_bottom_up + static_cast<size_t>(src_row) * w;
-    uint8_t* out = &cloud[static_cast<size_t>(row) * w * kPointStep];
-    for (int col = 0; col < w; ++col, out += kPointStep) {
+    uint16_t* out_mm = &depth_mm[static_cast<size_t>(row) * w];
+    uint8_t* out = cloud ? &(*cloud)[static_cast<size_t>(row) * w * kPointStep] : nullptr;
+    for (int col = 0; col < w; ++col) {
       float z = linearDepth(src_depth[col], near, far);
       if (!std::isnan(z)) {
         if (noise.scale > 0.0) z += static_cast<float>(noise.scale * kinectSigma(z)) * gauss(rng);
         if (z < noise.min_range || z > noise.max_range) z = nan;
         if (noise.dropout > 0.0 && uniform(rng) < noise.dropout) z = nan;
       }
+      // max_range (8 m) is far below 65.535 m: the rounded millimetres fit
+      out_mm[col] = std::isnan(z) ? 0 : static_cast<uint16_t>(std::lround(z * 1000.0f));
+      if (!out) continue;
       float xyz[3] = {nan, nan, nan};
       if (!std::isnan(z)) {
         xyz[0] = static_cast<float>((col - k.cx) * z / k.fx);
@@ -60,6 +66,7 @@ void buildFrame(const Intrinsics& k, const uint8_t* rgb_bottom_up, const float* 
                               (uint32_t(src_rgb[col * 3 + 1]) << 8) | uint32_t(src_rgb[col * 3 + 2]);
       std::memcpy(out, xyz, sizeof(xyz));
       std::memcpy(out + 12, &packed, 4);
+      out += kPointStep;
     }
   }
 }

@@ -139,7 +139,7 @@ struct Robot {
   bool teleport = false;
   geometry_msgs::Pose2D teleport_pose;
   ros::Subscriber cmd_vel_sub, set_pose_sub;
-  ros::Publisher odom_pub, true_pose_pub, image_pub, cloud_pub, info_pub;
+  ros::Publisher odom_pub, true_pose_pub, image_pub, depth_pub, cloud_pub, info_pub;
 
   Robot(const RobotConfig& c, const BaseGeometry& base) : config(c), odometry(base) {}
 };
@@ -156,6 +156,44 @@ geometry_msgs::Quaternion yawQuaternion(double yaw) {
   q.w = std::cos(yaw / 2.0);
   return q;
 }
+
+// Paces simulated time against the wall clock at a real-time factor, as a ceiling: when
+// the CPU falls behind, the lost wall time is written off instead of caught up, because a
+// burst of simulated seconds in a moment of wall time leaves every node that runs on
+// wall-clock CPU (camera pipeline, controllers, agents) seconds behind the world
+// (a helper found a robot in a frame 2 s old and turned past it).
+class WallPacer {
+ public:
+  using Clock = std::chrono::steady_clock;
+  WallPacer(double real_time_factor, Clock::time_point start)
+      : factor_(real_time_factor), wall_base_(start) {}
+
+  // Sleeps until simulated time t is due; returns the wall seconds written off now (0
+  // when on time). Lateness within the slack is caught up, so sleep jitter does not
+  // slow the simulation down.
+  double wait(double t) {
+    const Clock::time_point due = wall_base_ + std::chrono::duration_cast<Clock::duration>(
+                                                   std::chrono::duration<double>((t - t_base_) / factor_));
+    const Clock::time_point now = Clock::now();
+    const double late = std::chrono::duration<double>(now - due).count();
+    if (late > kSlack) {
+      wall_base_ = now;
+      t_base_ = t;
+      lost_ += late;
+      return late;
+    }
+    std::this_thread::sleep_until(due);
+    return 0.0;
+  }
+  double lost() const { return lost_; }
+
+ private:
+  static constexpr double kSlack = 0.05;  // s of wall time
+  double factor_;
+  Clock::time_point wall_base_;
+  double t_base_ = 0.0;
+  double lost_ = 0.0;
+};
 
 class Simulator {
  public:
@@ -200,6 +238,7 @@ class Simulator {
     const double control_period = 1.0 / clock_rate_;
     const int substeps = std::max(1, static_cast<int>(std::lround(control_period / model_->opt.timestep)));
     const auto wall_start = std::chrono::steady_clock::now();
+    WallPacer pacer(real_time_factor_, wall_start);
     double next_odom = 0.0, next_camera = 0.0;
     while (ros::ok()) {
       ros::spinOnce();
@@ -222,14 +261,17 @@ class Simulator {
       }
       if (max_sim_time_ > 0.0 && t >= max_sim_time_) break;
       if (real_time_factor_ > 0.0) {
-        // Wall-clock pacing: ros::Rate would follow /clock, which this node drives.
-        const auto due = wall_start + std::chrono::duration<double>(t / real_time_factor_);
-        std::this_thread::sleep_until(due);
+        const double dropped = pacer.wait(t);
+        if (dropped > 0.0)
+          ROS_WARN_THROTTLE(10.0, "rason_sim: the CPU cannot keep up with real-time factor %.2f; "
+                            "%.1f s of wall time lost so far are not caught up (the simulation "
+                            "runs slower instead of in bursts)", real_time_factor_, pacer.lost());
       }
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-    ROS_INFO("rason_sim: simulated %.1f s in %.1f s wall time (real-time factor %.2f)",
-             data_->time, wall, wall > 0 ? data_->time / wall : 0.0);
+    ROS_INFO("rason_sim: simulated %.1f s in %.1f s wall time (real-time factor %.2f; %.1f s of "
+             "wall time lost to a busy CPU)", data_->time, wall, wall > 0 ? data_->time / wall : 0.0,
+             pacer.lost());
   }
 
  private:
@@ -287,6 +329,7 @@ class Simulator {
     if (config.camera) {
       robot->camera = requireId(model_, mjOBJ_CAMERA, cameraName(n));
       robot->image_pub = nh.advertise<sensor_msgs::Image>(n + "/camera/rgb/image_raw", 2);
+      robot->depth_pub = nh.advertise<sensor_msgs::Image>(n + "/camera/depth_registered/image_raw", 2);
       robot->cloud_pub = nh.advertise<sensor_msgs::PointCloud2>(n + "/camera/depth_registered/points", 2);
       robot->info_pub = nh.advertise<sensor_msgs::CameraInfo>(n + "/camera/rgb/camera_info", 2);
     }
@@ -385,13 +428,15 @@ class Simulator {
 
   void publishCamera(Robot& robot, double t) {
     if (robot.camera < 0 || !renderer_) return;
-    const bool wanted = robot.image_pub.getNumSubscribers() + robot.cloud_pub.getNumSubscribers() > 0;
+    const bool cloud_wanted = robot.cloud_pub.getNumSubscribers() > 0;
+    const bool wanted = cloud_wanted || robot.image_pub.getNumSubscribers() > 0 ||
+                        robot.depth_pub.getNumSubscribers() > 0;
     if (!wanted) return;  // rendering is the costly part; skip it when nobody looks
     renderer_->render(model_, data_, robot.camera, rgb_, depth_);
     sensor_msgs::Image image;
     sensor_msgs::PointCloud2 cloud;
     buildFrame(intrinsics_, rgb_.data(), depth_.data(), renderer_->nearPlane(), renderer_->farPlane(),
-               noise_, rng_, image.data, cloud.data);
+               noise_, rng_, image.data, depth_mm_, cloud_wanted ? &cloud.data : nullptr);
     const ros::Time stamp(t);
     const std::string frame = robot.config.name + "/camera_rgb_optical_frame";
     image.header.stamp = stamp;
@@ -402,7 +447,26 @@ class Simulator {
     image.step = intrinsics_.width * 3;
     robot.image_pub.publish(image);
 
-    cloud.header = image.header;
+    if (robot.depth_pub.getNumSubscribers() > 0) publishDepth(robot, image.header);
+    if (cloud_wanted) publishCloud(robot, image.header, cloud);
+    publishInfo(robot, image.header);
+  }
+
+  void publishDepth(Robot& robot, const std_msgs::Header& header) {
+    sensor_msgs::Image depth;  // REP 118: 16UC1 in millimetres, 0 = no return
+    depth.header = header;
+    depth.width = intrinsics_.width;
+    depth.height = intrinsics_.height;
+    depth.encoding = "16UC1";
+    depth.is_bigendian = 0;
+    depth.step = intrinsics_.width * 2;
+    depth.data.resize(depth_mm_.size() * 2);
+    std::memcpy(depth.data.data(), depth_mm_.data(), depth.data.size());  // x86: little-endian
+    robot.depth_pub.publish(depth);
+  }
+
+  void publishCloud(Robot& robot, const std_msgs::Header& header, sensor_msgs::PointCloud2& cloud) {
+    cloud.header = header;
     cloud.width = intrinsics_.width;
     cloud.height = intrinsics_.height;
     cloud.is_dense = false;
@@ -419,9 +483,11 @@ class Simulator {
       cloud.fields.push_back(f);
     }
     robot.cloud_pub.publish(cloud);
+  }
 
+  void publishInfo(Robot& robot, const std_msgs::Header& header) {
     sensor_msgs::CameraInfo info;
-    info.header = image.header;
+    info.header = header;
     info.width = intrinsics_.width;
     info.height = intrinsics_.height;
     info.distortion_model = "plumb_bob";
@@ -463,6 +529,7 @@ class Simulator {
   Intrinsics intrinsics_;
   std::vector<unsigned char> rgb_;
   std::vector<float> depth_;
+  std::vector<uint16_t> depth_mm_;
   std::vector<std::shared_ptr<Robot>> robots_;
   ros::Publisher clock_pub_, tf_pub_, tf_static_pub_;
 };

@@ -1,6 +1,6 @@
-// Turns MuJoCo's offscreen RGB + depth buffers into what freenect publishes: a top-down
-// rgb8 image and an organized PointCloud2 (x, y, z, rgb) in the optical frame, with
-// Kinect-like depth noise and dropouts.
+// Turns MuJoCo's offscreen RGB + depth buffers into what a Kinect driver publishes: a
+// top-down rgb8 image, the registered depth image (16UC1, millimetres) and an organized
+// PointCloud2 (x, y, z, rgb) in the optical frame, with Kinect-like depth noise and dropouts.
 #pragma once
 
 #include <cstdint>
@@ -34,9 +34,12 @@ constexpr int kPointStep = 16;  // x, y, z, rgb as float32
 
 // rgb_bottom_up: width*height*3 bytes as MuJoCo reads them (first row = bottom).
 // depth_bottom_up: width*height floats, depth buffer values.
-// Fills image (rgb8, top row first) and cloud (kPointStep bytes per point, row-major).
+// Fills image (rgb8, top row first), depth_mm (millimetres along the optical axis, 0 = no
+// return, top row first) and, unless cloud is null, cloud (kPointStep bytes per point,
+// row-major). The noise drawn is the same whichever outputs are asked for.
 void buildFrame(const Intrinsics& k, const uint8_t* rgb_bottom_up, const float* depth_bottom_up,
                 double near, double far, const DepthNoise& noise, std::mt19937& rng,
-                std::vector<uint8_t>& image, std::vector<uint8_t>& cloud);
+                std::vector<uint8_t>& image, std::vector<uint16_t>& depth_mm,
+                std::vector<uint8_t>* cloud);
 
 }  // namespace rason_sim
