@@ -120,9 +120,10 @@ class TestSimVision(unittest.TestCase):
         rospy.loginfo('%d poses; worst errors: angle %.2f deg, depth %.3f m, yaw %.2f deg',
                       len(grid), *worst)
 
-    def test_nothing_in_view_gives_empty_list(self):
+    def test_nothing_in_view_gives_no_robot_only_the_frame_count(self):
         latest = self.place(HELPER, (-2.5, 2.5, 0.0))  # behind the helper
-        self.assertEqual(latest, [])
+        self.assertEqual(len(latest), 1, latest)
+        self.assertRegex(latest[0], r'^cameraFrame\(\d+,\d+\)$')
 
     def test_one_cylinder_hidden_gives_no_robot(self):
         # Helper turned round; the box at (-1.0, 0.06) stands in front of the orange cylinder.

@@ -153,3 +153,28 @@ def test_depth_to_points_inverts_the_projection():
     points = cloud.depth_to_points(depth, vs.Intrinsics())
     assert np.isnan(points[:10]).all()
     np.testing.assert_allclose(points[10:], xyz[10:], rtol=1e-5, atol=1e-6)
+
+
+def test_depth_image_in_millimetres_and_metres_reads_as_metres_with_nan_for_no_return():
+    mm = np.array([[0, 1000, 2501], [65535, 450, 0]], dtype='<u2')
+    msg = Image(height=2, width=3, encoding='16UC1', step=6, data=mm.tobytes())
+    np.testing.assert_allclose(cloud.depth_image_to_metres(msg),
+                               [[np.nan, 1.0, 2.501], [65.535, 0.45, np.nan]], rtol=1e-6)
+    big = Image(height=2, width=3, encoding='16UC1', step=6, is_bigendian=1,
+                data=mm.astype('>u2').tobytes())
+    np.testing.assert_array_equal(np.isnan(cloud.depth_image_to_metres(big)),
+                                  np.isnan(cloud.depth_image_to_metres(msg)))
+    m = np.array([[np.nan, 1.25], [0.0, 3.0]], dtype='<f4')
+    msg = Image(height=2, width=2, encoding='32FC1', step=8, data=m.tobytes())
+    np.testing.assert_allclose(cloud.depth_image_to_metres(msg), [[np.nan, 1.25], [np.nan, 3.0]])
+
+
+@pytest.mark.parametrize('msg', [
+    Image(height=2, width=2, encoding='rgb8', step=6, data=bytes(12)),
+    Image(height=0, width=2, encoding='16UC1', step=4, data=b''),
+    Image(height=2, width=2, encoding='16UC1', step=4, data=bytes(7)),
+    Image(height=2, width=2, encoding='32FC1', step=4, data=bytes(16)),
+])
+def test_bad_depth_images_raise_cloud_error(msg):
+    with pytest.raises(cloud.CloudError):
+        cloud.depth_image_to_metres(msg)

@@ -58,3 +58,20 @@ def test_yaw_rounded_to_minus_180_is_written_180():
 def test_robot_literal_refuses_nan_values():
     with pytest.raises(ValueError):
         lit.robot_literal('faulty', 0.0, math.nan, 0.0)
+
+
+def test_frame_literal_counts_from_one_and_carries_the_stamp():
+    assert lit.frame_literal(1, 0) == 'cameraFrame(1,0)'
+    assert lit.frame_literal(123456, 1795516398965) == 'cameraFrame(123456,1795516398965)'
+
+
+@pytest.mark.parametrize('bad', [0, -1, 1.5, True, '3', None])
+def test_frame_literal_rejects_what_is_not_a_count(bad):
+    with pytest.raises(ValueError):
+        lit.frame_literal(bad, 10)
+
+
+@pytest.mark.parametrize('bad', [-1, 1.5, True, '3', None])
+def test_frame_literal_rejects_what_is_not_a_stamp(bad):
+    with pytest.raises(ValueError):
+        lit.frame_literal(1, bad)

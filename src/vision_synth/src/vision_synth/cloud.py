@@ -146,6 +146,38 @@ def image_to_rgb(msg):
     return np.ascontiguousarray(view[..., list(order)])
 
 
+#: Depth image encodings (REP 118) -> (numpy dtype, metres per unit).
+_DEPTH_ENCODINGS = {'16uc1': ('u2', 0.001), 'mono16': ('u2', 0.001), '32fc1': ('f4', 1.0)}
+
+
+def depth_image_to_metres(msg):
+    """sensor_msgs/Image of depth (16UC1 millimetres or 32FC1 metres, REP 118) -> (H, W)
+    float32 metres, NaN where there is no return (0, NaN).
+
+    :raises CloudError: empty image, unknown encoding, data too short
+    """
+    enc = _DEPTH_ENCODINGS.get(msg.encoding.lower())
+    if enc is None:
+        raise CloudError('unsupported depth encoding %r (need one of 16UC1, 32FC1)'
+                         % (msg.encoding,))
+    kind, scale = enc
+    h, w = msg.height, msg.width
+    size = np.dtype(kind).itemsize
+    if h == 0 or w == 0:
+        raise CloudError('empty depth image (%dx%d)' % (w, h))
+    if msg.step < w * size or len(msg.data) < (h - 1) * msg.step + w * size:
+        raise CloudError('depth image %dx%d %s: step %d and %d bytes do not fit'
+                         % (w, h, msg.encoding, msg.step, len(msg.data)))
+    data = msg.data
+    if isinstance(data, list):
+        data = bytes(data)
+    dtype = np.dtype(kind).newbyteorder('>' if msg.is_bigendian else '<')
+    view = np.ndarray((h, w), dtype, buffer=data, strides=(msg.step, size))
+    metres = view.astype(np.float32) * np.float32(scale)
+    metres[~(metres > 0)] = np.nan
+    return metres
+
+
 def depth_to_points(depth, intrinsics):
     """Depth image (metres, NaN or 0 = no return) -> organized points (H, W, 3) float32.
 
