@@ -1,6 +1,8 @@
 """Unit tests of the message helpers of fault_injector.node; imports rospy but needs no master."""
 import math
 
+import pytest
+import rospy
 from nav_msgs.msg import Odometry
 
 from fault_injector import node
@@ -46,3 +48,16 @@ def test_frozen_odometry_keeps_values_follows_stamp():
 def test_frozen_odometry_same_message_unchanged():
     msg = _odom(1, 10, 1.0)
     assert node.frozen_odometry(msg, msg) is msg
+
+
+class _ClosedTopic(object):
+    def publish(self, msg):
+        raise rospy.ROSException('publish() to a closed topic')
+
+
+def test_publish_during_shutdown_drops_the_message_and_otherwise_raises(monkeypatch):
+    monkeypatch.setattr(rospy.core, 'is_shutdown_requested', lambda: True)
+    node._publish(_ClosedTopic(), Odometry())  # dropped quietly
+    monkeypatch.setattr(rospy.core, 'is_shutdown_requested', lambda: False)
+    with pytest.raises(rospy.ROSException):
+        node._publish(_ClosedTopic(), Odometry())

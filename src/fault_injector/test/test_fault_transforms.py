@@ -284,3 +284,37 @@ def test_nan_angular_single_actuator_replaced():
 
 def test_nan_twist_both_actuators_zero():
     assert faults.transform_twist(faults.BOTH_ACTUATORS, (NAN,) * 3, (NAN,) * 3) == (ZERO, ZERO)
+
+
+@pytest.mark.parametrize('severity', [0.25, 0.5, 0.9])
+@pytest.mark.parametrize('fault', [faults.LEFT_ACTUATOR, faults.RIGHT_ACTUATOR])
+def test_a_weaker_actuator_fault_blends_the_command_with_the_thesis_fault(fault, severity):
+    commanded = ((0.4, 0.0, 0.0), (0.0, 0.0, 0.1))
+    full = faults.transform_twist(fault, *commanded)
+    linear, angular = faults.transform_twist(fault, *commanded, severity=severity)
+    assert linear[0] == pytest.approx((1 - severity) * 0.4 + severity * full[0][0])
+    assert angular[2] == pytest.approx((1 - severity) * 0.1 + severity * full[1][2])
+    # weaker than the thesis's fault, still turning the same way
+    assert abs(angular[2] - 0.1) < abs(full[1][2] - 0.1)
+    assert (angular[2] - 0.1) * (full[1][2] - 0.1) > 0
+
+
+def test_severity_one_is_the_thesis_fault_and_other_faults_ignore_it():
+    commanded = ((0.4, 0.0, 0.0), (0.0, 0.0, 0.1))
+    assert faults.transform_twist(faults.LEFT_ACTUATOR, *commanded, severity=1.0) == \
+        faults.transform_twist(faults.LEFT_ACTUATOR, *commanded)
+    assert faults.transform_twist(faults.BOTH_ACTUATORS, *commanded, severity=0.3) == (ZERO, ZERO)
+    assert faults.transform_twist(faults.NONE, *commanded, severity=0.3) == commanded
+
+
+@pytest.mark.parametrize('bad', [0, -0.5, 1.5, float('nan'), 'strong', None])
+def test_severity_outside_zero_one_is_refused(bad):
+    with pytest.raises(ValueError, match='severity'):
+        faults.FaultState(faults.LEFT_ACTUATOR, severity=bad)
+
+
+def test_fault_state_applies_its_severity():
+    state = faults.FaultState(faults.RIGHT_ACTUATOR, severity='0.5')
+    assert state.severity == 0.5
+    assert state.twist((0.4, 0, 0), ZERO) == faults.transform_twist(
+        faults.RIGHT_ACTUATOR, (0.4, 0, 0), ZERO, severity=0.5)

@@ -6,7 +6,9 @@ without a ROS master; :mod:`fault_injector.node` converts messages.
 Faults:
 
 ``left_actuator`` / ``right_actuator``
-    Thesis Eq. 6.2 (angular velocity) and Eq. 6.3 (linear velocity).
+    Thesis Eq. 6.2 (angular velocity) and Eq. 6.3 (linear velocity) at severity 1 (the
+    wheel gives nothing); a weaker fault (severity s in (0, 1)) gives the command
+    blended: (1 - s) * commanded + s * Eq. 6.2/6.3.
 ``both_actuators``
     Every twist component is zero: the robot cannot move.
 ``odometry``
@@ -70,7 +72,21 @@ def has_nan(values):
     return any(math.isnan(v) for v in values)
 
 
-def transform_twist(fault, linear, angular):
+def check_severity(severity):
+    """The severity as a float in (0, 1].
+
+    :raises ValueError: for anything else (NaN included)
+    """
+    try:
+        value = float(severity)
+    except (TypeError, ValueError):
+        raise ValueError('severity must be a number in (0, 1], got %r' % (severity,))
+    if not 0.0 < value <= 1.0:  # also refuses NaN
+        raise ValueError('severity must be in (0, 1], got %r' % (severity,))
+    return value
+
+
+def transform_twist(fault, linear, angular, severity=1.0):
     """Apply an actuator fault to a velocity command.
 
     For ``left_actuator``/``right_actuator``, with ``x_lin = linear[0]``:
@@ -86,9 +102,14 @@ def transform_twist(fault, linear, angular):
     spot). NaN compares false too, so it behaves the same way and is passed on.
     The other components (unused by a differential drive) are left unchanged.
 
+    A weaker actuator fault (``severity`` below 1) passes on
+    ``(1 - severity) * commanded + severity * (the above)`` for ``linear.x`` and
+    ``angular.z``: from a healthy base near 0 to the thesis's fault at 1.
+
     :param fault: the active fault (one of :data:`FAULTS` or :data:`NONE`)
     :param linear: ``(x, y, z)`` linear velocity commanded
     :param angular: ``(x, y, z)`` angular velocity commanded
+    :param severity: in (0, 1] (see :func:`check_severity`); only actuator faults use it
     :return: ``(linear, angular)``, each a 3-tuple of floats, to send to the base
     """
     linear = tuple(float(v) for v in linear)
@@ -105,7 +126,11 @@ def transform_twist(fault, linear, angular):
         yaw = x_lin
     elif (right and x_lin > 0) or (left and x_lin < 0):
         yaw = -x_lin
-    return (x_lin / 2.0, linear[1], linear[2]), (angular[0], angular[1], yaw)
+    if severity >= 1.0:
+        return (x_lin / 2.0, linear[1], linear[2]), (angular[0], angular[1], yaw)
+    kept = 1.0 - severity
+    return ((kept * x_lin + severity * x_lin / 2.0, linear[1], linear[2]),
+            (angular[0], angular[1], kept * angular[2] + severity * yaw))
 
 
 class OdometryFreezer(object):
@@ -170,11 +195,14 @@ class FaultState(object):
     Not thread-safe: the node serialises calls with a lock.
 
     :param initial: the fault active at start-up (any of :data:`VALID_REQUESTS`)
+    :param severity: of the actuator faults, in (0, 1] (1: the thesis's)
     :raises UnknownFaultError: if ``initial`` is not valid
+    :raises ValueError: if ``severity`` is not in (0, 1]
     """
 
-    def __init__(self, initial=NONE):
+    def __init__(self, initial=NONE, severity=1.0):
         self._fault = NONE
+        self.severity = check_severity(severity)
         self.odometry = OdometryFreezer()
         parse_fault(initial)  # raises, where request() would only report
         self.request(initial)
@@ -210,7 +238,7 @@ class FaultState(object):
         :param angular: ``(x, y, z)`` commanded angular velocity
         :return: ``(linear, angular)`` for the base
         """
-        return transform_twist(self._fault, linear, angular)
+        return transform_twist(self._fault, linear, angular, self.severity)
 
     def odom(self, value):
         """Pass an odometry value through the freezer.

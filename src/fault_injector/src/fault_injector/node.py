@@ -90,11 +90,13 @@ def frozen_odometry(frozen, incoming):
 
 
 def _publish(publisher, msg):
-    """Publishes msg; a message that arrives while the node shuts down is dropped quietly."""
+    """Publishes msg; a message that arrives while the node shuts down is dropped quietly
+    (rospy closes its topics before is_shutdown() turns true, while a shutdown is only
+    requested)."""
     try:
         publisher.publish(msg)
     except rospy.ROSException:
-        if not rospy.is_shutdown():
+        if not (rospy.is_shutdown() or rospy.core.is_shutdown_requested()):
             raise
 
 
@@ -103,10 +105,12 @@ class FaultInjectorNode(object):
 
     :param initial_fault: fault active from start-up (see :data:`faults.VALID_REQUESTS`)
     :param status_period: seconds between periodic status messages; <= 0 disables them
+    :param severity: of the actuator faults, in (0, 1] (1: the thesis's)
     :raises faults.UnknownFaultError: if ``initial_fault`` is not valid
+    :raises ValueError: if ``severity`` is not in (0, 1]
     """
 
-    def __init__(self, initial_fault=faults.NONE, status_period=1.0, fault_at=0.0):
+    def __init__(self, initial_fault=faults.NONE, status_period=1.0, fault_at=0.0, severity=1.0):
         # Callbacks of each subscriber, the service and the timer run on
         # different threads.
         self._lock = threading.Lock()
@@ -114,7 +118,7 @@ class FaultInjectorNode(object):
         if fault_at > 0 and faults.parse_fault(initial_fault) != faults.NONE:
             self._mid_mission = faults.MidMissionFault(initial_fault, fault_at)
             initial_fault = faults.NONE
-        self._state = faults.FaultState(initial_fault)
+        self._state = faults.FaultState(initial_fault, severity)
         self._cmd_pub = rospy.Publisher('cmd_vel_out', Twist, queue_size=10)
         self._odom_pub = rospy.Publisher('odom_out', Odometry, queue_size=10)
         self._fault_pub = rospy.Publisher('active_fault', String, queue_size=1, latch=True)
@@ -184,7 +188,8 @@ class FaultInjectorNode(object):
         status = DiagnosticStatus(
             level=DiagnosticStatus.OK if fault == faults.NONE else DiagnosticStatus.WARN,
             name=rospy.get_name(), message=fault, hardware_id='',
-            values=[KeyValue(key='active_fault', value=fault)])
+            values=[KeyValue(key='active_fault', value=fault),
+                    KeyValue(key='severity', value='%g' % self._state.severity)])
         array = DiagnosticArray(status=[status])
         array.header.stamp = rospy.Time.now()
         self._diag_pub.publish(array)
@@ -196,10 +201,12 @@ def main():
     initial = rospy.get_param('~initial_fault', faults.NONE)
     period = float(rospy.get_param('~status_period', 1.0))
     fault_at = rospy.get_param('~fault_at', 0.0)
+    severity = rospy.get_param('~severity', 1.0)
     try:
-        FaultInjectorNode(initial_fault=initial, status_period=period, fault_at=float(fault_at))
+        FaultInjectorNode(initial_fault=initial, status_period=period, fault_at=float(fault_at),
+                          severity=severity)
     except (faults.UnknownFaultError, ValueError, TypeError) as e:
-        rospy.logfatal('fault_injector: ~initial_fault / ~fault_at: %s', e)
+        rospy.logfatal('fault_injector: ~initial_fault / ~fault_at / ~severity: %s', e)
         raise SystemExit(2)
     rospy.loginfo('fault_injector: ready, service %s', rospy.resolve_name('inject_fault'))
     rospy.spin()
