@@ -18,6 +18,39 @@ steady(D0, P0, Y0, D1, P1, Y1)
     :- steadyTolerance(TA, TD, TY)
      & math.abs(D1 - D0) < TA & math.abs(P1 - P0) < TD & math.abs(Y1 - Y0) < TY.
 maxSteadyReads(15).
+frameTimeout(10000).   // FIX: ms a camera frame may be late (see settle, steadyView);
+                       // generous, as a starved CPU can hold the camera pipeline for seconds
+
+// IMPROVED (thesis §7.5, §8.1: the observer repositions): a robot that moved towards the
+// edge of the 57-degree view loses a cylinder to the image border (it is then not seen,
+// or seen with a biased yaw), so before the second sighting the helper turns to bring it
+// back to the centre, and reports that sighting as seen from where it first looked
+// (beforeTurning). Farther off-centre than edgeMargin degrees counts as near the edge.
+edgeMargin(18).
+maxViewTurns(2).
+cameraAhead(0.08).     // m: the camera sits ahead of the axis the base turns about
+
+// Where a robot seen at (D1, P1, Y1) after I turned A degrees clockwise was in the view
+// before the turn (Angle and Yaw clockwise-positive, Yaw = heading + Angle, Depth along
+// the optical axis, as vision_synth reports them). Rounded as vision_synth rounds.
+beforeTurning(A, D, P, Y, D, P, Y) :- A == 0.
+beforeTurning(A, D1, P1, Y1, Deg, Depth, Yaw)
+    :- A \== 0 & cameraAhead(F)
+     & R = A * math.pi / 180
+     & X1 = P1 * math.tan(D1 * math.pi / 180)
+     & Z0 = (F + P1) * math.cos(R) - X1 * math.sin(R) - F
+     & X0 = (F + P1) * math.sin(R) + X1 * math.cos(R)
+     & D0 = math.atan(X0 / Z0) * 180 / math.pi
+     & Deg = math.round(D0 * 100) / 100
+     & Depth = math.round(Z0 * 1000) / 1000
+     & halfTurn(Y1 - D1 + A + D0, Y0)
+     & Yaw = math.round(Y0 * 100) / 100.
+
+// How far (degrees, clockwise) I turned from heading T0 to T1 (pos/3: radians, CCW).
+clockwiseTurn(T0, T1, A) :- halfTurn((T0 - T1) * 180 / math.pi, A).
+halfTurn(D, C) :- D > 180 & C = D - 360.
+halfTurn(D, C) :- D <= -180 & C = D + 360.
+halfTurn(D, D) :- D > -180 & D <= 180.
 
 /* Initial goals */
 !start.
@@ -44,7 +77,8 @@ maxSteadyReads(15).
   .drop_desire(trackMe);
   .drop_desire(giveFeedback);
   -helping(R);
-  -foundRobot(R,_,_,_).
+  -foundRobot(R,_,_,_);
+  -lastSeen(R,_).
 
 // IMPROVED: say so when the robot was not found, instead of searching for ever.
 -!helpme[source(R)]
@@ -81,6 +115,14 @@ maxSteadyReads(15).
   !settle;
   !findRobot(Robot,Turned+Rate).
 
+// FIX: with a camera that stamps its frames (vision_synth's cameraFrame(N, T), T in ms of
+// ROS time), wait for a frame taken settleTime after my motion ended: a busy CPU delivers
+// frames seconds late, and one taken before the turn ended shows the robot where it no
+// longer is in the view. A camera late by more than frameTimeout leaves the read to
+// steadyView.
++!settle : settleTime(T) & cameraFrame(_,_) & frameTimeout(W)
+<- rason.ros_time_ms(Now);
+  .wait(cameraFrame(_,S) & S >= Now + T, T + W, _).
 +!settle : settleTime(T) <- .wait(T).
 
 // IMPROVED: the initial position is the one seen (steadily) when tracking starts.
@@ -100,7 +142,7 @@ maxSteadyReads(15).
 
 +!reportFeedback(R)
 : foundRobot(R,Deg,Depth,Yaw)
-<- !steadyView(R,Deg1,Depth1,Yaw1);
+<- !currentView(R,Deg1,Depth1,Yaw1);
   .print("reporting to ",R," -> ",Deg," ",Depth," ",Yaw," / ",Deg1," ",Depth1," ",Yaw1);
   .send(R,achieve,feedback(initPos(Deg,Depth,Yaw),currPos(Deg1,Depth1,Yaw1))).
 
@@ -108,25 +150,78 @@ maxSteadyReads(15).
 <- .print("I cannot see ", R, " (steadily) any more");
   .send(R,achieve,noFeedback("the helper lost sight of the robot after it moved")).
 
+// IMPROVED: where R is now, seen steadily, in the view it was first seen in: R is brought
+// back from the edge of the view first (keepInView), and the turns that took are undone.
++!currentView(R,Deg,Depth,Yaw)
+<- !settle;
+  !keepInView(R,0,Turned);
+  !steadyView(R,D1,P1,Y1);
+  ?beforeTurning(Turned,D1,P1,Y1,Deg,Depth,Yaw).
+
+// Turned: how far (degrees, clockwise) I turned to keep R inside the view, at most
+// maxViewTurns turns: towards R when it is seen near the edge, towards where it was
+// last seen when it went out of the view there. Otherwise, no turn.
++!keepInView(R,N,0) : robot(R,D,_,_) & edgeMargin(M) & math.abs(D) < M <- true.
++!keepInView(R,N,0) : maxViewTurns(K) & N >= K <- true.
++!keepInView(R,N,Turned) : robot(R,D,_,_)
+<- .print(R, " is near the edge of my view (", D, " degrees); I turn to it");
+  !turnedBy(D,A);
+  !keepInView(R,N+1,T);
+  Turned = A + T.
++!keepInView(R,N,Turned) : lastSeen(R,D) & edgeMargin(M) & math.abs(D) >= M
+<- .print(R, " left my view at ", D, " degrees; I turn to where I saw it last");
+  !turnedBy(D,A);
+  -+lastSeen(R,D-A);
+  !keepInView(R,N+1,T);
+  Turned = A + T.
++!keepInView(R,N,0) <- true.
+
+// turn(D), then how far I really turned: from my odometry when I perceive it (pos/3),
+// else as commanded.
++!turnedBy(D,A) : pos(_,_,T0)
+<- turn(D);
+  !settle;
+  ?pos(_,_,T1);
+  ?clockwiseTurn(T0,T1,A).
++!turnedBy(D,D) <- turn(D); !settle.
+
+// The bearing at which R was seen last, while I help it (keepInView).
++robot(R,D,_,_) : helping(R) <- -+lastSeen(R,D).
+
 // Binds Deg, Depth, Yaw to where R is seen once two reads agree (see steady/6); a frame
 // without R costs one read; fails when the view does not settle within maxSteadyReads.
+// FIX: with a camera that stamps its frames (vision_synth's cameraFrame(N, T)), the second
+// read must come from a frame taken settleTime after the first: a busy CPU holds frames
+// and drops others, and two frames taken moments apart (or one frame read twice) agree
+// while the robot in them is still turning. No such frame within settleTime +
+// frameTimeout (ms): the view is not steady.
 +!steadyView(R,Deg,Depth,Yaw) <- !steadyView(R,Deg,Depth,Yaw,1).
 +!steadyView(R,Deg,Depth,Yaw,N) : maxSteadyReads(M) & N > M
 <- .print("My view of ", R, " did not settle");
   .fail.
 +!steadyView(R,Deg,Depth,Yaw,N)
 : robot(R,D0,P0,Y0)
+& cameraFrame(_,S0)
+& settleTime(T)
+& frameTimeout(W)
+<- .wait(cameraFrame(_,S1) & S1 >= S0 + T, T + W);
+  !steadyRead(R,D0,P0,Y0,Deg,Depth,Yaw,N).
++!steadyView(R,Deg,Depth,Yaw,N)
+: robot(R,D0,P0,Y0)
 & settleTime(T)
 <- .wait(T);
-  if (robot(R,D1,P1,Y1) & steady(D0,P0,Y0,D1,P1,Y1)) {
-    Deg = D1; Depth = P1; Yaw = Y1;
-  } else {
-    !steadyView(R,Deg,Depth,Yaw,N+1);
-  }.
+  !steadyRead(R,D0,P0,Y0,Deg,Depth,Yaw,N).
 +!steadyView(R,Deg,Depth,Yaw,N)
 : settleTime(T)
 <- .wait(T);
   !steadyView(R,Deg,Depth,Yaw,N+1).
+
+// The second read: steady with the first (D0, P0, Y0), or one more try.
++!steadyRead(R,D0,P0,Y0,Deg,Depth,Yaw,N)
+: robot(R,D1,P1,Y1) & steady(D0,P0,Y0,D1,P1,Y1)
+<- Deg = D1; Depth = P1; Yaw = Y1.
++!steadyRead(R,D0,P0,Y0,Deg,Depth,Yaw,N)
+<- !steadyView(R,Deg,Depth,Yaw,N+1).
 
 // IMPROVED: nothing about R is kept after thanks (no stale beliefs, thesis §8.1).
 +!thanks[source(R)]
@@ -134,7 +229,8 @@ maxSteadyReads(15).
 <- .print(R," said 'thanks'...");
   .print("You're welcome, ",R);
   -helping(R);
-  -foundRobot(R,_,_,_).
+  -foundRobot(R,_,_,_);
+  -lastSeen(R,_).
 
 // FIX: the thesis copied each robot/4 percept into a mental note
 // (+robot(...) <- +robot(...)); those copies outlive the perception and made the plans
