@@ -152,6 +152,8 @@ def test_markdown_report():
     assert 'fault injected at the start' in text
     assert '![Completion rate per fault](completion.png)' in lines
     assert 'Time to completion per fault' not in text     # no times figure given
+    # both arms' diagnoses: the baseline's 'none' under a left-actuator fault is wrong
+    assert '| left_actuator | 1 | 3 |  | 75 % (30 %–95 %) |' in lines
 
 
 def test_markdown_states_a_mid_mission_fault_and_met_goals():

@@ -3,7 +3,7 @@ import math
 
 import pytest
 
-from rason_campaign import plan
+from rason_campaign import cli, plan, poses
 
 
 def test_same_options_same_plan():
@@ -84,3 +84,37 @@ def test_bad_options(kwargs):
     options.update(kwargs)
     with pytest.raises(plan.PlanError):
         plan.make_plan(**options)
+
+
+def test_varied_runs_draw_poses_lighting_and_camera_noise_from_their_seed():
+    specs = plan.make_plan(['left_actuator'], 40, 3, varied=True)
+    assert plan.make_plan(['left_actuator'], 40, 3, varied=True)[7].args == specs[7].args
+    for spec in specs:
+        a = spec.args
+        assert a['fault'] == 'left_actuator' and a['seed'] == spec.seed
+        assert 1.0 - 1e-3 <= poses.distance(a) <= 3.0 + 1e-3
+        assert 0.6 <= a['brightness'] <= 1.2
+        assert 1.0 <= a['depth_noise'] <= 2.0
+        assert 0.0 <= a['depth_dropout'] <= 0.05
+        # the poses are spread_poses's of the run's seed: the other draws leave them alone
+        assert {k: a[k] for k in poses.spread_poses(spec.seed)} == \
+            poses.spread_poses(spec.seed, plan.VARIED_DISTANCE, plan.VARIED_FACING_AWAY)
+    assert len({s.args['depth_noise'] for s in specs}) > 30   # each run draws its own
+
+
+def test_varied_dim_runs_leave_the_brightness_to_the_interaction():
+    spec = plan.make_plan(['none'], 1, 1, interaction='dim', varied=True)[0]
+    assert 'brightness' not in spec.args and 'depth_noise' in spec.args
+
+
+def test_varied_is_not_nominal():
+    with pytest.raises(plan.PlanError, match='varied'):
+        plan.make_plan(['none'], 1, 1, jitter=False, varied=True)
+
+
+@pytest.mark.parametrize('argv', [['--varied', '--no-jitter'],
+                                  ['--varied', '--scenario', 'fault_tolerance']])
+def test_command_line_refuses_varied_with_what_it_contradicts(argv, capsys):
+    with pytest.raises(SystemExit):
+        cli.parse_args(['--out', 'x'] + argv)
+    assert '--varied' in capsys.readouterr().err

@@ -120,3 +120,16 @@ def test_bad_mission_options(kwargs):
     options.update(kwargs)
     with pytest.raises(plan.PlanError):
         plan.make_mission_plan(**options)
+
+
+def test_spread_poses_takes_other_ranges():
+    distances, offsets = [], []
+    for s in SEEDS:
+        p = poses.spread_poses(s, (1.0, 3.0), math.radians(30))
+        distances.append(poses.distance(p))
+        offsets.append(math.degrees(angle_between(p['faulty_yaw'], poses.bearing(p))))
+        for key in ('helper_x', 'helper_y', 'faulty_x', 'faulty_y'):
+            assert abs(p[key]) <= LIMIT + EPS, (s, key, p[key])
+    assert all(1.0 - EPS <= d <= 3.0 + EPS for d in distances)
+    assert min(distances) < 1.1 and max(distances) > 2.9
+    assert 25.0 < max(offsets) <= 30.0 + 0.01

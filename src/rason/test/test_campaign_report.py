@@ -125,3 +125,31 @@ def test_progress_line():
         (22.3, 'diagnosis', {'component': 'left_actuator', 'evidence': 'seen'})])
     assert cli.progress_start(SPEC, 25) == '[1/25] left_actuator seed=1001 ... '
     assert cli.progress_end(r) == 'correct in 21.3 s (wall 25 s)'
+
+
+def test_confusion_matrix_rows_columns_and_wilson_intervals():
+    matrix, columns = stats.confusion(results())
+    assert columns == ['both_actuators', 'odometry', 'none', 'undiagnosed']
+    assert matrix == {'both_actuators': {'both_actuators': 2},
+                      'odometry': {'undiagnosed': 1, 'both_actuators': 1},
+                      'none': {'none': 1}}
+    lines = report.confusion_table(results())
+    assert lines[0] == '| Injected ↓ diagnosed → | both_actuators | odometry | none | undiagnosed | ' \
+                       'Correct (95 % CI) |'
+    assert '| both_actuators | 2 |  |  |  | 100 % (34 %–100 %) |' in lines
+    assert '| odometry | 1 |  |  | 1 | 0 % (0 %–66 %) |' in lines
+    assert lines[-1] == '| **all** |  |  |  |  | 60 % (23 %–88 %) |'
+
+
+def test_no_diagnosis_at_all_is_an_undiagnosed_column():
+    runs = [result(1, 'left_actuator', 'undiagnosed', (None,) * 4, None),
+            result(2, 'left_actuator', 'wrong', (None,) * 4, 'right_actuator')]
+    matrix, columns = stats.confusion(runs)
+    assert columns == ['left_actuator', 'right_actuator', 'undiagnosed']
+    assert matrix == {'left_actuator': {'undiagnosed': 1, 'right_actuator': 1}}
+
+
+def test_markdown_has_the_confusion_matrix():
+    lines = report.markdown(META, results(), {}).splitlines()
+    assert '## Confusion matrix' in lines
+    assert '| none |  |  | 1 |  | 100 % (21 %–100 %) |' in lines

@@ -17,9 +17,10 @@ import sys
 import time
 
 from rason_campaign import (figures, mission, mission_figures, mission_report, plan, report,
-                            stats, steps)
+                            slots, stats, steps)
 
 PLAN_FILE = 'plan.json'
+PORTS_PER_SLOT = 100  # master ports each run slot (--jobs) picks from
 # Wall seconds before a run is stopped, per scenario: a recovery (a delegated mission above
 # all) takes longer than the diagnosis alone.
 TIMEOUTS = {'diagnosis': 240.0, 'fault_tolerance': 420.0}
@@ -44,19 +45,33 @@ def parse_args(argv):
                    help='interaction fault of thesis §7.5-7.6 (default none)')
     p.add_argument('--no-jitter', action='store_true',
                    help='diagnosis: nominal start poses and brightness in every run')
+    p.add_argument('--varied', action='store_true',
+                   help='diagnosis: start poses 1-3 m apart in any relative pose, Faulty facing '
+                   'away within ±30°, the camera\'s depth noise and dropouts and the lighting '
+                   'drawn per run')
     p.add_argument('--timeout', type=float,
                    help='wall seconds before a run is stopped (default %s)' % ', '.join(
                        '%.0f for %s' % (t, s) for s, t in sorted(TIMEOUTS.items())))
     p.add_argument('--port', type=int, default=11611,
-                   help='first ROS master port to try (default 11611)')
+                   help='first ROS master port to try (default 11611; run slot k tries '
+                   'from PORT + 100 k)')
+    p.add_argument('--jobs', type=int, default=1,
+                   help='runs at the same time, each on a master of its own (default 1); '
+                   'the report is the same, the wall time shorter while the CPU has room')
     p.add_argument('--images', action='store_true', help='bags also hold the camera images')
     p.add_argument('--analyze-only', action='store_true',
                    help='no runs: report again from the bags in --bags')
     args = p.parse_args(argv)
     if args.timeout is None:
         args.timeout = TIMEOUTS[args.scenario]
+    if args.jobs < 1:
+        p.error('--jobs must be at least 1')
     if args.fault_at and args.scenario != 'fault_tolerance':
         p.error('--fault-at is for --scenario fault_tolerance')
+    if args.varied and args.scenario != 'diagnosis':
+        p.error('--varied is for --scenario diagnosis')
+    if args.varied and args.no_jitter:
+        p.error('--varied goes without --no-jitter')
     if args.no_jitter and args.scenario != 'diagnosis':
         p.error('--no-jitter is for --scenario diagnosis (fault_tolerance spreads the poses)')
     return args
@@ -166,7 +181,8 @@ def main(argv=None):
                                                args.interaction, args.rate, args.images)
             else:
                 specs = plan.make_plan(faults, args.runs, args.seed, args.interaction,
-                                       args.rate, args.images, jitter=not args.no_jitter)
+                                       args.rate, args.images, jitter=not args.no_jitter,
+                                       varied=args.varied)
         except plan.PlanError as e:
             sys.exit('campaign: %s' % e)
         meta = {'command': 'rosrun rason campaign ' + ' '.join(
@@ -174,6 +190,8 @@ def main(argv=None):
                 'date': datetime.date.today().isoformat(), 'runs': args.runs,
                 'seed': args.seed, 'rate': args.rate, 'interaction': args.interaction,
                 'jitter': not args.no_jitter, 'timeout': args.timeout}
+        if args.varied:
+            meta['varied'] = True
         if args.scenario != 'diagnosis':  # a diagnosis plan.json stays what it was
             del meta['jitter']            # the poses are spread by poses.spread_poses
             meta.update({'scenario': args.scenario, 'fault_at': args.fault_at})
@@ -195,24 +213,27 @@ def main(argv=None):
 
 
 def run_all(args, specs, bags, runner, start_line, analyze_run, end_line):
-    """Runs each spec (or, with --analyze-only, loads its record), analyses it and prints its
-    progress line; returns the results in order.
+    """Runs each spec, --jobs at a time (or, with --analyze-only, loads its record), analyses
+    it and prints its progress line as it ends; returns the results in the specs' order.
 
     :param start_line: (index from 1, spec) -> the text printed before the run
     :param analyze_run: (spec, record or None) -> the run's result
     :param end_line: result -> the text that ends the line"""
-    results = []
-    for index, spec in enumerate(specs, 1):
-        record_path = os.path.join(bags, spec.name + '.run.json')
-        print(start_line(index, spec), end='', flush=True)
+    def run_one(numbered, slot):
+        _index, spec = numbered
         if args.analyze_only:
-            record = runner.RunRecord.load(record_path) if os.path.exists(record_path) else None
+            path = os.path.join(bags, spec.name + '.run.json')
+            record = runner.RunRecord.load(path) if os.path.exists(path) else None
         else:
-            record = runner.run(spec, bags, args.timeout, args.port)
-        result = analyze_run(spec, record)
-        results.append(result)
-        print(end_line(result), flush=True)
-    return results
+            record = runner.run(spec, bags, args.timeout, args.port + PORTS_PER_SLOT * slot)
+        return analyze_run(spec, record)
+
+    def print_line(_position, numbered, result):
+        print(start_line(*numbered) + end_line(result), flush=True)
+
+    jobs = 1 if args.analyze_only else args.jobs
+    return slots.run_in_slots(list(enumerate(specs, 1)), jobs, run_one, print_line,
+                              runner.stop_all)
 
 
 def run_missions(args, meta, specs, bags, runner, bagread):

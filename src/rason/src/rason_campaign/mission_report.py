@@ -12,7 +12,7 @@ import json
 from rason_campaign import stats
 from rason_campaign.mission import MISSION_LENGTH, TOLERANCE
 from rason_campaign.plan import ARMS, FAULTS
-from rason_campaign.report import DASH, fmt, table
+from rason_campaign.report import DASH, confusion_table, fmt, percent, table
 
 TARGET_RECOVERY = 0.95      # completion rate every fault must reach with recovery
 TARGET_BASELINE = 0.0       # completion rate of the baseline under the four faults
@@ -133,10 +133,6 @@ def goals(results, rows=None):
     return out
 
 
-def _pct(value):
-    return DASH if value is None else '%.0f %%' % (100 * value)
-
-
 def _vs_none(row):
     if row['time_vs_none'] is None:
         return DASH
@@ -151,9 +147,9 @@ def summary_table(rows):
               'Max goal error (m)']
     body = []
     for r in rows:
-        ci = DASH if r['ci_low'] is None else '%s–%s' % (_pct(r['ci_low']), _pct(r['ci_high']))
+        ci = DASH if r['ci_low'] is None else '%s–%s' % (percent(r['ci_low']), percent(r['ci_high']))
         body.append([r['fault'], r['arm'], r['runs'], r['completed'],
-                     '%s (%s)' % (_pct(r['rate']), ci), r['wrong'],
+                     '%s (%s)' % (percent(r['rate']), ci), r['wrong'],
                      fmt(r['time_median'], 1), fmt(r['time_p90'], 1), _vs_none(r),
                      fmt(r['goal_error_median'], 3), fmt(r['goal_error_max'], 3)])
     return table(header, body)
@@ -226,7 +222,11 @@ def markdown(meta, results, figures):
                         ('times', 'Time to completion per fault')):
         if name in figures:
             lines += ['![%s](%s)' % (title, figures[name]), '']
-    lines += ['## Runs', '']
+    lines += ['## Diagnoses', '',
+              'Runs of both arms per injected fault (rows) and diagnosis (columns); the correct '
+              'rate with its Wilson 95 % interval.', '']
+    lines += confusion_table(results, key='diagnosis')
+    lines += ['', '## Runs', '']
     lines += runs_table(results)
     lines.append('')
     return '\n'.join(lines)

@@ -4,6 +4,10 @@ Deterministic: the same (faults, runs, seed, options) give the same plan. Each r
 own seed (``seed * 1000 + run number``) which seeds both the simulator and the run's
 jitter of the start poses (about ±5 cm, ±3°) and of the lighting (brightness 0.8-1.2).
 
+``varied`` diagnosis runs (issue 18) are drawn far wider (:func:`varied_args`): any relative
+pose 1-3 m apart, Faulty facing away within ±30°, the Helper in any heading, and the
+camera's depth noise, dropouts and the lighting.
+
 Two scenarios: ``diagnosis`` (the thesis's case study, faulty_helper.launch) and
 ``fault_tolerance`` (issue 15), where each planned run is made twice with the same seed and
 start poses (spread out by :mod:`rason_campaign.poses`): the ``recovery`` arm
@@ -23,6 +27,13 @@ NOMINAL = {'helper_x': -1.0, 'helper_y': 0.75, 'helper_yaw': 0.0,
 POSITION_JITTER = 0.05           # metres, uniform ±
 YAW_JITTER = math.radians(3.0)   # radians, uniform ±
 BRIGHTNESS_RANGE = (0.8, 1.2)
+
+# Varied diagnosis runs (issue 18): ranges of what varied_args draws.
+VARIED_DISTANCE = (1.0, 3.0)                 # metres between Helper and Faulty
+VARIED_FACING_AWAY = math.radians(30.0)      # Faulty's heading: bearing Helper -> Faulty ± this
+VARIED_BRIGHTNESS = (0.6, 1.2)
+VARIED_DEPTH_NOISE = (1.0, 2.0)              # times the Kinect's axial noise
+VARIED_DEPTH_DROPOUT = (0.0, 0.05)           # probability a depth pixel has no return
 
 # Interaction faults (thesis §7.5-7.6): faulty_helper.launch's interaction:= argument sets
 # them; a jittered argument the interaction sets itself is left out (else it would win).
@@ -122,6 +133,21 @@ def jittered_args(seed, jitter=True):
     return args
 
 
+def varied_args(seed):
+    """Start poses, lighting and camera noise of one varied run, a pure function of its
+    seed: poses by :func:`rason_campaign.poses.spread_poses` over VARIED_DISTANCE and
+    VARIED_FACING_AWAY (Helper in any heading), the rest uniform over its VARIED_ range.
+
+    :rtype: dict of launch argument -> value
+    """
+    args = spread_poses(seed, VARIED_DISTANCE, VARIED_FACING_AWAY)
+    rng = random.Random('varied %d' % seed)  # its own stream: the poses stay spread_poses's
+    args['brightness'] = round(rng.uniform(*VARIED_BRIGHTNESS), 3)
+    args['depth_noise'] = round(rng.uniform(*VARIED_DEPTH_NOISE), 3)
+    args['depth_dropout'] = round(rng.uniform(*VARIED_DEPTH_DROPOUT), 4)
+    return args
+
+
 def _check_options(runs, interaction, rate):
     # the options both scenarios share; raises PlanError
     if runs < 1:
@@ -133,9 +159,12 @@ def _check_options(runs, interaction, rate):
         raise PlanError('--rate must be >= 0, got %s' % rate)
 
 
-def make_plan(faults, runs, seed, interaction='none', rate=1.0, images=False, jitter=True):
+def make_plan(faults, runs, seed, interaction='none', rate=1.0, images=False, jitter=True,
+              varied=False):
     """The campaign's runs: ``runs`` per fault, faults in the order given, run numbers
-    1..len(faults)*runs, run seed ``seed * 1000 + number``.
+    1..len(faults)*runs, run seed ``seed * 1000 + number``; start poses and lighting
+    jittered about the thesis's (:func:`jittered_args`), nominal (``jitter`` False) or, with
+    ``varied``, drawn by :func:`varied_args`.
 
     The run's ``interaction`` argument names the interaction fault; ``dim`` drops the
     jittered brightness.
@@ -144,12 +173,14 @@ def make_plan(faults, runs, seed, interaction='none', rate=1.0, images=False, ji
     :raises PlanError: on bad options.
     """
     _check_options(runs, interaction, rate)
+    if varied and not jitter:
+        raise PlanError('varied runs are not nominal: --varied goes without --no-jitter')
     plan = []
     for fault in faults:
         for _ in range(runs):
             number = len(plan) + 1
             run_seed = seed * 1000 + number
-            args = jittered_args(run_seed, jitter)
+            args = varied_args(run_seed) if varied else jittered_args(run_seed, jitter)
             for name in INTERACTIONS[interaction]:
                 del args[name]
             args.update({'fault': fault, 'seed': run_seed, 'rate': rate,

@@ -25,7 +25,7 @@ def wrap(angle):
     return math.pi if wrapped <= -math.pi else wrapped
 
 
-def spread_poses(seed):
+def spread_poses(seed, distance_range=DISTANCE_RANGE, facing_away=FACING_AWAY):
     """Start poses of one run, drawn from ``random.Random(seed)``.
 
     The distance and the bearing are drawn first; then the Helper's position is drawn
@@ -33,18 +33,21 @@ def spread_poses(seed):
     most 2.2 m that range is not empty), so the distance stays exactly uniform, with no
     rejected draws.
 
+    :param distance_range: (low, high) metres between the robots, high at most 5 m
+        (twice the 2.5 m that the margin leaves on each side of the room's centre)
+    :param facing_away: radians: Faulty's heading is the bearing Helper -> Faulty ± this
     :rtype: dict with helper_x, helper_y, helper_yaw, faulty_x, faulty_y, faulty_yaw
         (metres, radians in (-pi, pi]), rounded to DIGITS
     """
     rng = random.Random(seed)
-    distance = rng.uniform(*DISTANCE_RANGE)
+    distance = rng.uniform(*distance_range)
     bearing = math.pi - 2 * math.pi * rng.random()          # (-pi, pi]
     dx, dy = distance * math.cos(bearing), distance * math.sin(bearing)
     limit = ROOM_HALF - WALL_MARGIN
     # Helper's coordinate h must satisfy |h| <= limit and |h + d| <= limit.
     hx = rng.uniform(max(-limit, -limit - dx), min(limit, limit - dx))
     hy = rng.uniform(max(-limit, -limit - dy), min(limit, limit - dy))
-    faulty_yaw = wrap(bearing + rng.uniform(-FACING_AWAY, FACING_AWAY))
+    faulty_yaw = wrap(bearing + rng.uniform(-facing_away, facing_away))
     helper_yaw = math.pi - 2 * math.pi * rng.random()       # (-pi, pi]: it must search
     poses = {'helper_x': hx, 'helper_y': hy, 'helper_yaw': helper_yaw,
              'faulty_x': hx + dx, 'faulty_y': hy + dy, 'faulty_yaw': faulty_yaw}

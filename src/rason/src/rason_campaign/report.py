@@ -51,6 +51,34 @@ def summary_table(summary):
     return table(header, rows)
 
 
+def percent(fraction):
+    """'96 %', or a dash for None."""
+    return DASH if fraction is None else '%.0f %%' % (100 * fraction)
+
+
+def percent_interval(successes, n):
+    """'96 % (86 %–99 %)': the rate and its Wilson 95 % interval, or a dash for no runs."""
+    low, high = stats.wilson(successes, n)
+    if low is None:
+        return DASH
+    return '%s (%s–%s)' % (percent(successes / n), percent(low), percent(high))
+
+
+def confusion_table(results, key='component'):
+    """Markdown lines: a row per injected fault, a column per diagnosed component, then
+    the correct rate with its Wilson 95 % interval; a last row for all runs."""
+    matrix, columns = stats.confusion(results, key)
+    header = ['Injected ↓ diagnosed →'] + columns + ['Correct (95 % CI)']
+    rows = []
+    for fault, row in matrix.items():
+        n = sum(row.values())
+        rows.append([fault] + [row.get(c, 0) or '' for c in columns] +
+                    [percent_interval(row.get(fault, 0), n)])
+    correct = sum(row.get(fault, 0) for fault, row in matrix.items())
+    rows.append(['**all**'] + [''] * len(columns) + [percent_interval(correct, len(results))])
+    return table(header, rows)
+
+
 def fault_table(fault, results, fault_summary):
     """Markdown lines like thesis Tables 7.1-7.4: a row per run, then mean, sd (correct
     runs) and the thesis's mean of each column."""
@@ -96,6 +124,11 @@ def markdown(meta, results, figures):
               % (summary['counts']['correct'], summary['runs'],
                  DASH if frac is None else '%.0f %%' % (100 * frac),
                  summary['counts']['undiagnosed'], summary['counts']['wrong']), '']
+    lines += ['## Confusion matrix', '',
+              'Runs per injected fault (rows) and diagnosis (columns); the correct rate with its '
+              'Wilson 95 % interval.', '']
+    lines += confusion_table(results)
+    lines.append('')
     for name, title in (('totals', 'Total latency per run'), ('outcomes', 'Outcomes')):
         if name in figures:
             lines += ['![%s](%s)' % (title, figures[name]), '']

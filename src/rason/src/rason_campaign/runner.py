@@ -9,6 +9,7 @@ import os
 import signal
 import socket
 import subprocess
+import threading
 import time
 import xmlrpc.client
 
@@ -207,6 +208,19 @@ def _recover_bag(bag):
     os.rename(active, bag)
 
 
+# Launches under way (runs on several slots at once), so Ctrl-C can stop them all.
+_live = set()
+_live_lock = threading.Lock()
+
+
+def stop_all():
+    """Stops every launch under way (each ends its run as timed out would: bag closed)."""
+    with _live_lock:
+        procs = list(_live)
+    for proc in procs:
+        _stop(proc)
+
+
 def run(spec, bag_dir, timeout, base_port=11611):
     """Run ``spec`` to its end or ``timeout`` wall seconds; the bag and the launch's log go
     to ``bag_dir/<spec.name>.bag|.log``, the record to ``.run.json``.
@@ -229,6 +243,8 @@ def run(spec, bag_dir, timeout, base_port=11611):
         with open(log, 'a') as out:
             proc = subprocess.Popen(cmd, stdout=out, stderr=subprocess.STDOUT, env=master.env(),
                                     stdin=subprocess.DEVNULL, start_new_session=True)
+            with _live_lock:
+                _live.add(proc)
             try:
                 proc.wait(timeout)
             except subprocess.TimeoutExpired:
@@ -239,6 +255,9 @@ def run(spec, bag_dir, timeout, base_port=11611):
                 raise
             else:
                 _stop_leftovers(proc.pid)
+            finally:
+                with _live_lock:
+                    _live.discard(proc)
         wall = round(time.monotonic() - t0, 1)
     record = RunRecord(None if timed_out else proc.returncode, wall, timed_out, bag, log)
     _recover_bag(bag)

@@ -55,6 +55,32 @@ def summary(results):
             'correct_fraction': total['correct'] / n if n else None}
 
 
+UNDIAGNOSED = 'undiagnosed'
+
+
+def confusion(results, key='component'):
+    """Injected fault -> {diagnosed component -> runs}, and the columns in order: every
+    injected fault (in order of appearance), then any other component diagnosed, then
+    'undiagnosed' (no diagnosis at all counts as undiagnosed). ``key``: the field of a
+    result that holds the diagnosed component.
+
+    :rtype: (dict, list)
+    """
+    matrix = {}
+    columns = []
+    for r in results:
+        matrix.setdefault(r['fault'], {})
+        if r['fault'] not in columns:
+            columns.append(r['fault'])
+    for r in results:
+        diagnosed = r.get(key) or UNDIAGNOSED
+        row = matrix[r['fault']]
+        row[diagnosed] = row.get(diagnosed, 0) + 1
+        if diagnosed not in columns and diagnosed != UNDIAGNOSED:
+            columns.append(diagnosed)
+    return matrix, columns + [UNDIAGNOSED]
+
+
 def wilson(successes, n, z=1.96):
     """Wilson score interval of a proportion (95 % for z = 1.96): unlike p ± z·se it stays
     inside [0, 1] and is not empty at 0 or n successes, which is where a campaign's rates
