@@ -118,3 +118,15 @@ def test_command_line_refuses_varied_with_what_it_contradicts(argv, capsys):
     with pytest.raises(SystemExit):
         cli.parse_args(['--out', 'x'] + argv)
     assert '--varied' in capsys.readouterr().err
+
+
+def test_output_dirs_makes_a_new_report_directory_when_the_bags_go_elsewhere(tmp_path):
+    out, bags = tmp_path / 'new' / 'report', tmp_path / 'bags'
+    assert cli.output_dirs(str(out), str(bags)) == str(bags)
+    assert out.is_dir() and bags.is_dir()
+
+
+def test_output_dirs_puts_the_bags_under_the_report_by_default(tmp_path):
+    out = tmp_path / 'report'
+    assert cli.output_dirs(str(out)) == str(out / 'bags')
+    assert (out / 'bags').is_dir()

@@ -161,13 +161,20 @@ def write_report(out, meta, results):
         f.write(report.results_json(meta, results))
 
 
+def output_dirs(out, bags=None):
+    """Makes the report's directory and the bags' (default OUT/bags) if missing; returns the bags'."""
+    bags = bags or os.path.join(out, 'bags')
+    os.makedirs(out, exist_ok=True)
+    os.makedirs(bags, exist_ok=True)
+    return bags
+
+
 def main(argv=None):
     """The campaign command; exits with status 1 when a run was diagnosed wrongly. The
     scenario of --analyze-only is the one plan.json was made for."""
     from rason_campaign import bagread, runner  # ROS only here
     args = parse_args(sys.argv[1:] if argv is None else argv)
-    bags = args.bags or os.path.join(args.out, 'bags')
-    os.makedirs(bags, exist_ok=True)
+    bags = output_dirs(args.out, args.bags)
     plan_path = os.path.join(args.out, PLAN_FILE)
     if args.analyze_only:
         with open(plan_path) as f:
