@@ -19,7 +19,7 @@ import rosgraph
 import rospkg
 import rospy
 from rospy.impl.rosout import RosOutHandler
-from rason_msgs.msg import Action, AgentMessage, Event, Perception, Presence
+from rason_msgs.msg import Action, AgentMessage, Event, MindState, Perception, Presence
 from rosgraph_msgs.msg import Clock
 
 from rason_bridge.coalesce import FloodEnd, PerceptionCoalescer
@@ -27,6 +27,7 @@ from rason_bridge.exits import exit_for_shutdown
 from rason_bridge.fleet_auth import OFF, auth_settings, no_key_help, to_int64, to_uint64
 from rason_bridge.jvm import JvmError, start_jvm
 from rason_bridge.limits import apply_input_limits, seconds_to_nanos
+from rason_bridge.mind import MindSwitch, mind_settings, to_msg as mind_msg
 from rason_bridge.outbox import DEFERRED, NO_DECOMPOSER, ActionOutbox
 from rason_bridge.peers import HELD, MessageOutbox
 from rason_bridge.trust import apply_trust
@@ -157,6 +158,7 @@ class RasonMasNode(object):
         self._message_item = jpype.JClass(outbound + 'AgentMessage')
         self._stop_item = jpype.JClass(outbound + 'Stop')
         self._announce_item = jpype.JClass(outbound + 'Announce')
+        self._mind = None  # (settings, publisher, switch) once configure_mind() was called
         self._bridge.attach()  # the agents' outbox and log are ours from now on
         threading.Thread(target=self._log_loop, name='rason_log', daemon=True).start()
 
@@ -187,6 +189,18 @@ class RasonMasNode(object):
                 self._bridge.requireFleetKeyFile(settings.key_file)
         except self._jpype.JException as e:
             raise FleetKeyError(str(e.getMessage()))
+
+    def configure_mind(self, settings):
+        """Publish the agents' mental state on jason/mind (:mod:`rason_bridge.mind`; before :meth:`start`).
+
+        :param settings: :class:`rason_bridge.mind.MindSettings`; period 0 publishes nothing
+        """
+        if settings.period <= 0:
+            return
+        self._bridge.setMindLimits(settings.max_items, settings.max_chars)
+        self._bridge.setMindPeriodNanos(0)  # read only once somebody subscribes
+        publisher = rospy.Publisher('jason/mind', MindState, queue_size=2, latch=True)
+        self._mind = (settings, publisher, MindSwitch(seconds_to_nanos('mind_period', settings.period)))
 
     # ---- life cycle -----------------------------------------------------------------
 
@@ -231,6 +245,8 @@ class RasonMasNode(object):
         self._outbound_thread.start()
         threading.Thread(target=self._outbox_loop, name='rason_outbox', daemon=True).start()
         threading.Thread(target=self._presence_loop, name='rason_presence', daemon=True).start()
+        if self._mind is not None:
+            threading.Thread(target=self._mind_loop, name='rason_mind', daemon=True).start()
         self._use_ros_time_for_agents()
         self._bridge.tick(_ros_now_ns())  # the agents' clock is known before their first action
         rospy.Timer(rospy.Duration(0.05), self._on_tick)
@@ -534,6 +550,23 @@ class RasonMasNode(object):
                           self._connect_wait)
         return held
 
+    def _mind_loop(self):
+        # Java's agents read their own state; this thread only switches that on while
+        # jason/mind has subscribers, and publishes what changed.
+        settings, publisher, switch = self._mind
+        while not self._stopping and not rospy.is_shutdown():
+            period = switch.update(publisher.get_num_connections())
+            if period is not None:
+                self._bridge.setMindPeriodNanos(period)
+            if switch.on:
+                minds = self._bridge.mindChanges()
+                if minds is not None:
+                    try:
+                        publisher.publish(mind_msg(self.mas_id, _ros_now_ns(), minds))
+                    except rospy.ROSException as e:  # shutting down
+                        rospy.logdebug('jason/mind not published: %s', e)
+            time.sleep(settings.period)
+
     def _log_loop(self):
         # The agents' .print and Jason's log, queued on the Java side: written here,
         # off the agents' threads, so printing never makes an agent wait for Python.
@@ -578,7 +611,9 @@ def main(argv=None):
     ``max_literals`` (int, 1000), ``max_sources`` (int, 100) (see :mod:`rason_bridge.limits`), and the
     fleet authentication's ``fleet_auth`` (required or off), ``fleet_key_file`` (str,
     $ROS_HOME/rason/fleet.key), ``fleet_key`` (str), ``auth_window`` (float s, 60; 0 disables)
-    (see :mod:`rason_bridge.fleet_auth`).
+    (see :mod:`rason_bridge.fleet_auth`), and the mental state's ``mind_period`` (float s, 0.5;
+    0: no jason/mind), ``mind_max_items`` (int, 200), ``mind_max_chars`` (int, 500)
+    (see :mod:`rason_bridge.mind`).
     Publishes the hosted agents' names on the ``~agents`` parameter.
     """
     args = rospy.myargv(argv if argv is not None else sys.argv)
@@ -609,6 +644,7 @@ def main(argv=None):
         apply_input_limits(node.input_limits(), lambda name, default: rospy.get_param('~' + name, default))
         node.set_trust(rospy.get_param('~trust', {}))
         auth = auth_settings(lambda name, default: rospy.get_param('~' + name, default), rospkg.get_ros_home())
+        node.configure_mind(mind_settings(lambda name, default: rospy.get_param('~' + name, default)))
     except ValueError as e:
         if node is not None:
             node.close_log()

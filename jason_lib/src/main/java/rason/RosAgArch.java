@@ -12,6 +12,7 @@ import jason.ReceiverNotFoundException;
 import jason.architecture.AgArch;
 import jason.asSemantics.ActionExec;
 import jason.asSemantics.CircumstanceListener;
+import jason.asSemantics.Event;
 import jason.asSemantics.Intention;
 import jason.asSemantics.Message;
 import jason.asSemantics.TransitionSystem;
@@ -30,6 +31,7 @@ import rason.bridge.Bridge;
 import rason.bridge.Outbound;
 import rason.bridge.Protocol;
 import rason.messaging.Messages;
+import rason.mind.MindRecorder;
 import rason.messaging.RemoteAsks;
 import rason.messaging.SentAsks;
 import rason.perception.PerSourcePerception;
@@ -67,6 +69,10 @@ public class RosAgArch extends AgArch {
     // Set when ROS data arrives and cleared when a cycle starts, so an agent
     // woken just before it decides to sleep runs one more cycle instead.
     private volatile boolean newData = false;
+    // jason/mind: recent events and messages, snapshots on this agent's thread while the bridge wants them
+    private final MindRecorder mind = new MindRecorder();
+    private final MindRecorder.Reader readMind = (events, messages) -> bridge.mindReader().read(getTS(),
+            getCycleNumber(), bridge.clock().now(), actions.pendingView(), events.items(), messages.items());
 
     @Override
     public void init() throws Exception {
@@ -163,6 +169,30 @@ public class RosAgArch extends AgArch {
         super.reasoningCycleStarting();
     }
 
+    /** Records the cycle's event and, when due, a snapshot of the agent's state for jason/mind. */
+    @Override
+    public void reasoningCycleFinished() {
+        long period = bridge.mindPeriodNanos();
+        if (period > 0) {
+            Event selected = getTS().getC().getSelectedEvent();
+            if (selected != null)
+                mind.event(selected.getTrigger().toString());
+            mind.cycleEnded(period, System.nanoTime(), readMind);
+        }
+        super.reasoningCycleFinished();
+    }
+
+    /** This agent's side of jason/mind (its snapshots, read by the node's thread). */
+    public MindRecorder mind() {
+        return mind;
+    }
+
+    /** A snapshot at the end of the next cycle, which this wakes the agent for (any thread). */
+    public void requestMind() {
+        mind.request();
+        dataArrived();
+    }
+
     /** Ends an action: OK resumes the intention, anything else fails it with that reason. */
     private void complete(ActionExec action, String result) {
         if (Protocol.OK.equals(result)) {
@@ -227,7 +257,32 @@ public class RosAgArch extends AgArch {
     @Override
     public boolean canSleep() {
         actions.takeBackOrphans(getTS().getC().getPendingActions());
-        return !newData && !actions.hasSettled() && !asks.hasLost() && super.canSleep();
+        boolean sleep = !newData && !actions.hasSettled() && !asks.hasLost() && super.canSleep();
+        if (sleep && bridge.mindPeriodNanos() > 0)
+            mind.goingToSleep(System.nanoTime(), readMind); // the state it pauses in is never missed
+        return sleep;
+    }
+
+    /** Moves the mail into Jason's circumstance, noting each message for jason/mind. */
+    @Override
+    public void checkMail() {
+        if (bridge.mindPeriodNanos() <= 0) {
+            super.checkMail();
+            return;
+        }
+        Collection<Message> box = getTS().getC().getMailBox();
+        int before = box.size();
+        super.checkMail();
+        int i = 0;
+        for (Message m : box)
+            if (i++ >= before) // the new ones are at the end
+                mind.message(dialogueLine(m));
+    }
+
+    /** "sender -> receiver: performative content", as rason_dialogue prints a message. */
+    static String dialogueLine(Message m) {
+        String to = m.getReceiver() == null || m.getReceiver().isEmpty() ? "all" : m.getReceiver();
+        return m.getSender() + " -> " + to + ": " + m.getIlForce() + " " + m.getPropCont();
     }
 
     // ---- messages to agents of other processes ----------------------------------------
@@ -242,6 +297,8 @@ public class RosAgArch extends AgArch {
     public void sendMsg(Message m) throws Exception {
         if (m.getSender() == null)
             m.setSender(getAgName());
+        if (bridge.mindPeriodNanos() > 0)
+            mind.message(dialogueLine(m));
         String to = m.getReceiver();
         String local = bridge.registry().localNameFor(to);
         if (local != null) {
@@ -282,6 +339,11 @@ public class RosAgArch extends AgArch {
     public void broadcast(Message m) throws Exception {
         if (m.getSender() == null)
             m.setSender(getAgName());
+        if (bridge.mindPeriodNanos() > 0) {
+            Message all = m.clone();
+            all.setReceiver("");
+            mind.message(dialogueLine(all));
+        }
         for (String name : new ArrayList<>(AgentRegistry.jasonAgents().keySet())) {
             if (name.equals(getAgName()))
                 continue;

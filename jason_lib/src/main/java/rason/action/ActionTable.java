@@ -28,6 +28,10 @@ public final class ActionTable<A> {
     }
 
     /** An action the robot must stop (a cancel goes out for it). */
+    /** A pending action as it stands: since when (ROS time) and whether it is held. */
+    public record Running<A>(A action, int id, long startedNanos, boolean held) {
+    }
+
     public record Taken<A>(A action, int id) {
     }
 
@@ -248,6 +252,14 @@ public final class ActionTable<A> {
 
     public synchronized boolean hasSettled() {
         return !settled.isEmpty();
+    }
+
+    /** The actions still waiting for their feedback, oldest first (held ones included). */
+    public synchronized List<Running<A>> pending() {
+        List<Running<A>> out = new ArrayList<>(pending.size());
+        for (Map.Entry<Integer, Pending<A>> e : pending.entrySet())
+            out.add(new Running<>(e.getValue().action, e.getKey(), e.getValue().startedNanos, e.getValue().held));
+        return out;
     }
 
     /** Actions still waiting for their feedback (held ones included). */

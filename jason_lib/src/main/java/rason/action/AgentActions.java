@@ -19,6 +19,7 @@ import rason.bridge.InputLimits;
 import rason.bridge.Outbound;
 import rason.bridge.Outbox;
 import rason.bridge.Protocol;
+import rason.mind.AgentMind;
 
 /**
  * One agent's actions from {@code act()} to the robot and back: each is
@@ -121,6 +122,14 @@ public final class AgentActions {
 
     public int pendingCount() {
         return table.pendingCount();
+    }
+
+    /** The pending actions as {@code jason/mind} shows them, oldest first. */
+    public List<AgentMind.ActionView> pendingView() {
+        List<AgentMind.ActionView> out = new ArrayList<>();
+        for (ActionTable.Running<ActionExec> r : table.pending())
+            out.add(new AgentMind.ActionView(r.id(), r.action().getActionTerm().toString(), r.startedNanos(), r.held()));
+        return out;
     }
 
     /**

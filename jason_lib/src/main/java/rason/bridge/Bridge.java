@@ -3,7 +3,10 @@ package rason.bridge;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collection;
+import java.util.Comparator;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -28,6 +31,8 @@ import rason.messaging.RateLimitedLog;
 import rason.messaging.TrustPolicy;
 import rason.messaging.WarnOnce;
 import rason.messaging.WireMessage;
+import rason.mind.AgentMind;
+import rason.mind.MindReader;
 import rason.perception.PerceptionManagers;
 import rason.perception.PerceptionSources;
 
@@ -69,6 +74,10 @@ public final class Bridge implements Fleet.Listener {
     private volatile String defaultPerceptionManager = PerceptionManagers.PER_SOURCE;
     private volatile String shutdownReason = null;
     private volatile boolean attached = false;
+    // jason/mind (rason.mind): off (0) until the node has a subscriber for it
+    private volatile long mindPeriodNanos = 0;
+    private volatile MindReader mindReader = new MindReader(MIND_MAX_ITEMS, MIND_MAX_CHARS);
+    private final Map<String, Long> mindPublished = new HashMap<>(); // guarded by itself
 
     private Bridge() {
     }
@@ -204,6 +213,68 @@ public final class Bridge implements Fleet.Listener {
     public synchronized int nextActionId() {
         lastActionId = lastActionId == Integer.MAX_VALUE ? 1 : lastActionId + 1;
         return lastActionId;
+    }
+
+    // ---- jason/mind -----------------------------------------------------------------------
+
+    /** Default bounds of a snapshot: entries a list, characters an entry. */
+    public static final int MIND_MAX_ITEMS = 200;
+    public static final int MIND_MAX_CHARS = 500;
+
+    /**
+     * How often at most (wall clock) a running agent's state is read for jason/mind; 0
+     * stops reading. Turning it on has every agent read its state in its next cycle,
+     * and the next {@link #mindChanges()} returns them all.
+     */
+    public void setMindPeriodNanos(long t) {
+        if (t < 0)
+            throw new IllegalArgumentException("the mind period must be 0 (off) or more, not " + t + " ns");
+        boolean turnedOn = mindPeriodNanos <= 0 && t > 0;
+        mindPeriodNanos = t;
+        if (turnedOn) {
+            synchronized (mindPublished) {
+                mindPublished.clear();
+            }
+            for (RosAgArch arch : registry.all())
+                arch.requestMind();
+        }
+    }
+
+    public long mindPeriodNanos() {
+        return mindPeriodNanos;
+    }
+
+    /** Bounds of each snapshot: at most maxItems entries a list, maxChars characters an entry. */
+    public void setMindLimits(int maxItems, int maxChars) {
+        mindReader = new MindReader(maxItems, maxChars);
+    }
+
+    public MindReader mindReader() {
+        return mindReader;
+    }
+
+    /**
+     * Every hosted agent's newest snapshot, sorted by name, when one of them changed or an
+     * agent came or went since the last call; null when nothing did (the node's thread).
+     */
+    public AgentMind[] mindChanges() {
+        List<AgentMind> minds = new ArrayList<>();
+        Map<String, Long> versions = new HashMap<>();
+        for (RosAgArch arch : registry.all()) {
+            AgentMind m = arch.mind().latest();
+            if (m != null) {
+                minds.add(m);
+                versions.put(m.name(), arch.mind().version());
+            }
+        }
+        synchronized (mindPublished) {
+            if (versions.equals(mindPublished))
+                return null;
+            mindPublished.clear();
+            mindPublished.putAll(versions);
+        }
+        minds.sort(Comparator.comparing(AgentMind::name));
+        return minds.toArray(new AgentMind[0]);
     }
 
     // ---- agents ------------------------------------------------------------------------

@@ -1,0 +1,10 @@
+/* Initial beliefs */
+charge(90).
+
+/* Plans */
+
+// the test answers deliver(P) as the robot would, and sends go(P) percepts
++go(P) <- !deliver(P).
++!deliver(P) <- !carry(P); +delivered(P); .print("delivered ", P).
++!carry(P) <- deliver(P).
+-!deliver(P)[error(R)] <- +failed(P, R).
