@@ -1,0 +1,78 @@
+#!/usr/bin/python3
+"""The dashboard in headless Chromium during a case-study run: three robots' agents side by
+side (faulty, helper and a third robot), a belief, an intention, the dialogue and the
+diagnosis; then the run's bag, replayed in the dashboard, shows the same dialogue and
+diagnosis as the live page did."""
+import os
+import re
+import sys
+import time
+import unittest
+
+import rosnode
+import rospy
+import rostest
+
+import rospkg
+sys.path.insert(0, os.path.join(rospkg.RosPack().get_path('rason_dashboard'), 'test'))
+from browser import By, chromium, texts, wait_until  # noqa: E402
+from rason_dashboard.replay import load_bag  # noqa: E402
+from rason_dashboard.server import DashboardServer  # noqa: E402
+
+RUN = 180.0  # s (wall) for the whole case study at rate 2
+
+
+def dialogue(driver):
+    """The page's messages between robots, without their times."""
+    return [re.sub(r'^\S+\s*', '', line) for line in texts(driver, '.dialogue')]
+
+
+class TestDashboardLive(unittest.TestCase):
+
+    def test_live_then_replayed(self):
+        rospy.init_node('test_dashboard_live')
+        started = time.time()
+        deadline = time.monotonic() + 30
+        while not rospy.has_param('/dashboard/url'):
+            self.assertLess(time.monotonic(), deadline, 'the dashboard did not start')
+            time.sleep(0.1)
+        url = rospy.get_param('/dashboard/url')
+        self.assertTrue(url.startswith('http://127.0.0.1:'), url)
+        driver = chromium()
+        self.addCleanup(driver.quit)
+        driver.get(url)
+
+        wait_until(driver, lambda d: sorted(e.get_attribute('data-agent') for e in
+                                            d.find_elements(By.CSS_SELECTOR, '[data-agent]'))
+                   == ['faulty', 'helper', 'third_courier'], timeout=60)
+        self.assertEqual(sorted(e.get_attribute('data-robot') for e in driver.find_elements(By.CSS_SELECTOR, '[data-robot]')),
+                         ['/faulty/rason_mas', '/helper/rason_mas', '/third/rason_mas'])
+        self.assertIn('charge(90)[source(self)]', texts(driver, '[data-agent=third_courier] .belief'))
+        wait_until(driver, lambda d: any(p for p in texts(d, '[data-agent=helper] .plan')), timeout=60)
+        wait_until(driver, lambda d: 'both_actuators' in ' '.join(texts(d, '[data-status="rason/diagnosis"]')),
+                   timeout=RUN)
+        wait_until(driver, lambda d: 'faulty -> helper: achieve thanks' in dialogue(d), timeout=30)
+        live_dialogue = dialogue(driver)
+        live_diagnosis = texts(driver, '[data-status="rason/diagnosis"]')
+        self.assertIn('faulty -> all: achieve helpme', live_dialogue)
+
+        # the bag: closed when its recorder stops
+        bag = rospy.get_param('~bag')
+        rosnode.kill_nodes(['/recorder'])
+        deadline = time.monotonic() + 30
+        while not (os.path.exists(bag) and os.path.getmtime(bag) >= started):
+            self.assertLess(time.monotonic(), deadline, 'the recorder did not close %s' % bag)
+            time.sleep(0.2)
+        timeline, counts = load_bag(bag)
+        self.assertGreater(counts['minds'], 0, 'no jason/mind in the bag')
+        server = DashboardServer(timeline, '127.0.0.1', 0).start()
+        self.addCleanup(server.stop)
+        driver.get(server.url)
+        wait_until(driver, lambda d: d.find_element(By.ID, 'slider').is_displayed())
+        wait_until(driver, lambda d: texts(d, '[data-status="rason/diagnosis"]') == live_diagnosis)
+        replayed = dialogue(driver)
+        self.assertEqual(replayed[:len(live_dialogue)], live_dialogue)
+
+
+if __name__ == '__main__':
+    rostest.rosrun('rason', 'dashboard_live', TestDashboardLive)

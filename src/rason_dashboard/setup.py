@@ -1,0 +1,5 @@
+from setuptools import setup
+from catkin_pkg.python_setup import generate_distutils_setup
+
+setup(**generate_distutils_setup(packages=['rason_dashboard'], package_dir={'': 'src'},
+                                 package_data={'rason_dashboard': ['web/*']}))

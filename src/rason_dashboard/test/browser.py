@@ -1,0 +1,32 @@
+"""Headless Chromium (Debian's chromium and chromium-driver) driven by Selenium, for the
+dashboard's browser tests; flags that keep it off the network and out of the way."""
+import tempfile
+
+from selenium import webdriver
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.by import By
+from selenium.webdriver.support.ui import WebDriverWait
+
+CHROMIUM = '/usr/bin/chromium'
+CHROMEDRIVER = '/usr/bin/chromedriver'
+FLAGS = ['--headless=new', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+         '--disable-background-networking', '--disable-component-update', '--disable-sync',
+         '--disable-dev-shm-usage', '--window-size=1600,1200']
+
+
+def chromium():
+    options = webdriver.ChromeOptions()
+    options.binary_location = CHROMIUM
+    for flag in FLAGS:
+        options.add_argument(flag)
+    options.add_argument('--user-data-dir=' + tempfile.mkdtemp(prefix='rason_chromium_'))
+    return webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
+
+
+def texts(driver, css):
+    return [e.text for e in driver.find_elements(By.CSS_SELECTOR, css)]
+
+
+def wait_until(driver, condition, timeout=20.0):
+    """condition(driver) true within timeout; the last value, or raises TimeoutException."""
+    return WebDriverWait(driver, timeout, poll_frequency=0.1).until(condition)
