@@ -20,7 +20,7 @@ APT_PACKAGES := catkin ros-message-generation ros-message-runtime libstd-msgs-de
   libmujoco-dev libqhull-dev libosmesa6-dev python3-matplotlib python3-psutil \
   python3-actionlib python3-actionlib-msgs ros-actionlib-msgs python3-std-srvs ros-std-srvs \
   python3-move-base-msgs ros-move-base-msgs \
-  python3-selenium chromium chromium-driver
+  python3-selenium chromium chromium-driver python3-visualization-msgs ros-visualization-msgs python3-yaml
 
 # Environment of every ROS command: the workspace's devel space, logs in build/.
 export PYENV_VERSION := system
@@ -31,13 +31,14 @@ ROSENV := set +u; source $(CURDIR)/devel/setup.bash; set -u;
 # The fleet key of every rason_mas started through make (its default place under ROS_HOME).
 FLEET_KEY := $(ROS_HOME)/rason/fleet.key
 
-.PHONY: help setup apt jason_lib catkin test javatest unit rostest demo bench clean
+.PHONY: help setup apt jason_lib catkin test javatest unit rostest demo bench rviz clean
 
 help:
 	@echo "make demo   - set up, then run the case study (both actuators faulty) in the simulator"
 	@echo "make test   - set up, then run unit tests (JUnit, pytest) and rostests"
 	@echo "make setup  - install Debian packages, build jason_lib (Maven) and the catkin workspace, make a fleet key"
 	@echo "make bench  - benchmarks (see README)"
+	@echo "make rviz   - install rviz if missing, then show the simulated world (run beside make demo)"
 
 setup: apt jason_lib catkin $(FLEET_KEY)
 
@@ -89,6 +90,12 @@ demo: setup
 BENCH_ARGS ?=
 bench: setup
 	$(ROSENV) rosrun rason_bench run_bench --out $(CURDIR)/results/bench $(BENCH_ARGS)
+
+# rviz is a viewer, not needed by demo or test: installed only when asked for.
+rviz: setup
+	@dpkg -s rviz >/dev/null 2>&1 || { $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq rviz; }
+	$(ROSENV) roslaunch rason rviz.launch
 
 clean:
 	rm -rf build devel jason_lib/target build.log
