@@ -4,7 +4,6 @@ side (faulty, helper and a third robot), a belief, an intention, the dialogue an
 diagnosis; then the run's bag, replayed in the dashboard, shows the same dialogue and
 diagnosis as the live page did."""
 import os
-import re
 import sys
 import time
 import unittest
@@ -15,7 +14,7 @@ import rostest
 
 import rospkg
 sys.path.insert(0, os.path.join(rospkg.RosPack().get_path('rason_dashboard'), 'test'))
-from browser import By, chromium, texts, wait_until  # noqa: E402
+from browser import attributes, chromium, texts, wait_until  # noqa: E402
 from rason_dashboard.replay import load_bag  # noqa: E402
 from rason_dashboard.server import DashboardServer  # noqa: E402
 
@@ -24,7 +23,7 @@ RUN = 180.0  # s (wall) for the whole case study at rate 2
 
 def dialogue(driver):
     """The page's messages between robots, without their times."""
-    return [re.sub(r'^\S+\s*', '', line) for line in texts(driver, '.dialogue')]
+    return attributes(driver, '.dialogue', 'data-line')
 
 
 class TestDashboardLive(unittest.TestCase):
@@ -42,10 +41,9 @@ class TestDashboardLive(unittest.TestCase):
         self.addCleanup(driver.quit)
         driver.get(url)
 
-        wait_until(driver, lambda d: sorted(e.get_attribute('data-agent') for e in
-                                            d.find_elements(By.CSS_SELECTOR, '[data-agent]'))
+        wait_until(driver, lambda d: sorted(attributes(d, '[data-agent]', 'data-agent'))
                    == ['faulty', 'helper', 'third_courier'], timeout=60)
-        self.assertEqual(sorted(e.get_attribute('data-robot') for e in driver.find_elements(By.CSS_SELECTOR, '[data-robot]')),
+        self.assertEqual(sorted(attributes(driver, '[data-robot]', 'data-robot')),
                          ['/faulty/rason_mas', '/helper/rason_mas', '/third/rason_mas'])
         self.assertIn('charge(90)[source(self)]', texts(driver, '[data-agent=third_courier] .belief'))
         wait_until(driver, lambda d: any(p for p in texts(d, '[data-agent=helper] .plan')), timeout=60)
@@ -68,7 +66,7 @@ class TestDashboardLive(unittest.TestCase):
         server = DashboardServer(timeline, '127.0.0.1', 0).start()
         self.addCleanup(server.stop)
         driver.get(server.url)
-        wait_until(driver, lambda d: d.find_element(By.ID, 'slider').is_displayed())
+        wait_until(driver, lambda d: d.find_element('id', 'slider').is_displayed())
         wait_until(driver, lambda d: texts(d, '[data-status="rason/diagnosis"]') == live_diagnosis)
         replayed = dialogue(driver)
         self.assertEqual(replayed[:len(live_dialogue)], live_dialogue)

@@ -73,3 +73,8 @@ def test_message_holds_every_field_of_every_agent():
 
 def test_no_agents_is_an_empty_list():
     assert to_msg('/x', 0, []).agents == []
+
+
+def test_the_inspector_url_when_one_runs():
+    assert to_msg('/x', 0, []).inspector_url == ''
+    assert to_msg('/x', 0, [], 'http://127.0.0.1:40123').inspector_url == 'http://127.0.0.1:40123'

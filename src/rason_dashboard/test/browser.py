@@ -4,7 +4,6 @@ import tempfile
 
 from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
-from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import WebDriverWait
 
 CHROMIUM = '/usr/bin/chromium'
@@ -24,7 +23,17 @@ def chromium():
 
 
 def texts(driver, css):
-    return [e.text for e in driver.find_elements(By.CSS_SELECTOR, css)]
+    """The rendered text of every element matching css, read in one go (the page redraws
+    whole parts, so elements found one call earlier may be gone)."""
+    return driver.execute_script(
+        'return Array.from(document.querySelectorAll(arguments[0])).map(e => e.innerText.trim());', css)
+
+
+def attributes(driver, css, name):
+    """The attribute name of every element matching css, read in one go."""
+    return driver.execute_script(
+        'return Array.from(document.querySelectorAll(arguments[0])).map(e => e.getAttribute(arguments[1]));',
+        css, name)
 
 
 def wait_until(driver, condition, timeout=20.0):

@@ -34,7 +34,9 @@ def case_study_bag(path, t0=100.0):
     with rosbag.Bag(path, 'w') as bag:
         def put(topic, msg, t):
             bag.write(topic, msg, genpy.Time.from_sec(t))
-        put('/faulty/jason/mind', mind('/faulty/rason_mas', t0, 'faulty', ['stuck[source(self)]']), t0)
+        faulty = mind('/faulty/rason_mas', t0, 'faulty', ['stuck[source(self)]'])
+        faulty.inspector_url = 'http://127.0.0.1:40001'  # Jason's mind inspector of that process
+        put('/faulty/jason/mind', faulty, t0)
         put('/helper/jason/mind', mind('/helper/rason_mas', t0 + 0.1, 'helper', ['searching[source(self)]'],
                                        ['p1: +!findRobot(faulty) <- turn(10)'], 'turn(10)'), t0 + 0.1)
         put('/rason/messages', message('faulty', '', 'achieve', 'helpme'), t0 + 1)

@@ -7,7 +7,7 @@ import sys
 import pytest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from browser import By, chromium, texts, wait_until  # noqa: E402
+from browser import attributes, chromium, texts, wait_until  # noqa: E402
 from dashboard_data import case_study_bag  # noqa: E402
 from rason_dashboard.replay import load_bag  # noqa: E402
 from rason_dashboard.server import DashboardServer  # noqa: E402
@@ -33,17 +33,18 @@ def set_slider(driver, fraction):
 
 
 def test_the_end_of_the_run_shows_robots_agents_dialogue_and_diagnosis(page):
-    wait_until(page, lambda d: len(d.find_elements(By.CSS_SELECTOR, '[data-robot]')) == 2)
-    assert sorted(e.get_attribute('data-agent') for e in page.find_elements(By.CSS_SELECTOR, '[data-agent]')) == \
-        ['faulty', 'helper']
+    wait_until(page, lambda d: len(attributes(d, '[data-robot]', 'data-robot')) == 2)
+    assert sorted(attributes(page, '[data-agent]', 'data-agent')) == ['faulty', 'helper']
     assert 'found(faulty)[source(self)]' in texts(page, '[data-agent=helper] .belief')
-    assert texts(page, '.dialogue')[-1].endswith('helper -> faulty: tell found(faulty)')
+    assert attributes(page, '.dialogue', 'data-line')[-1] == 'helper -> faulty: tell found(faulty)'
     assert texts(page, '[data-status="rason/diagnosis"]') == ['rason/diagnosis: faulty: both_actuators']
-    assert page.find_element(By.ID, 'slider').is_displayed()
+    assert page.find_element('id', 'slider').is_displayed()
+    assert attributes(page, '[data-robot="/faulty/rason_mas"] a.inspector', 'href') == ['http://127.0.0.1:40001']
+    assert attributes(page, '[data-robot="/helper/rason_mas"] a.inspector', 'href') == []
 
 
 def test_moving_the_slider_back_shows_the_search_and_forth_again_the_finding(page):
-    wait_until(page, lambda d: d.find_element(By.ID, 'slider').is_displayed())
+    wait_until(page, lambda d: d.find_element('id', 'slider').is_displayed())
     set_slider(page, 0.05)  # 0.45 s into the run: the helper searches, Faulty asked nobody yet
     wait_until(page, lambda d: texts(d, '[data-agent=helper] .belief') == ['searching[source(self)]'])
     assert texts(page, '[data-agent=helper] .plan') == ['p1: +!findRobot(faulty) <- turn(10)']

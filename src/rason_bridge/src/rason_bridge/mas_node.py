@@ -562,7 +562,8 @@ class RasonMasNode(object):
                 minds = self._bridge.mindChanges()
                 if minds is not None:
                     try:
-                        publisher.publish(mind_msg(self.mas_id, _ros_now_ns(), minds))
+                        publisher.publish(mind_msg(self.mas_id, _ros_now_ns(), minds,
+                                                   str(self._bridge.mindInspectorUrl())))
                     except rospy.ROSException as e:  # shutting down
                         rospy.logdebug('jason/mind not published: %s', e)
             time.sleep(settings.period)

@@ -70,9 +70,9 @@ def _texts(java_list):
     return [str(t) for t in java_list]
 
 
-def to_msg(mas_id, stamp_nanos, minds):
+def to_msg(mas_id, stamp_nanos, minds, inspector_url=''):
     """A ``MindState`` of the Java ``AgentMind`` records (or anything with the same accessors)."""
-    msg = MindState(stamp=_time(stamp_nanos), mas_id=mas_id)
+    msg = MindState(stamp=_time(stamp_nanos), mas_id=mas_id, inspector_url=inspector_url)
     for m in minds:
         msg.agents.append(AgentMind(
             name=str(m.name()), cycle=int(m.cycle()), stamp=_time(m.stampNanos()),

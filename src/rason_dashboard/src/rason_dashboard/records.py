@@ -16,6 +16,7 @@ def mind_record(msg):
     return {
         'mas_id': msg.mas_id,
         'stamp': _secs(msg.stamp),
+        'inspector_url': getattr(msg, 'inspector_url', ''),  # bags recorded before it existed lack it
         'agents': [{
             'name': a.name, 'cycle': a.cycle, 'stamp': _secs(a.stamp),
             'beliefs': list(a.beliefs), 'goals': list(a.goals),

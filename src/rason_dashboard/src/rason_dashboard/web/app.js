@@ -52,12 +52,14 @@ function draw(view) {
   const robots = document.getElementById('robots');
   robots.replaceChildren(...view.robots.map(r => {
     const card = el('div', { class: 'robot', 'data-robot': r.mas_id }, el('h2', {}, r.mas_id));
+    if (r.inspector_url && r.inspector_url.startsWith('http://127.0.0.1:'))  // Jason's, on this machine
+      card.append(el('a', { class: 'inspector', href: r.inspector_url, target: '_blank' }, "Jason's mind inspector"));
     if (!r.agents.length) card.append(el('p', { class: 'empty' }, 'no agents'));
     for (const a of r.agents) card.append(agentView(a));
     return card;
   }));
   document.getElementById('messages').replaceChildren(...view.messages.map(m =>
-    el('li', { class: 'dialogue' }, el('span', { class: 'time' }, m.time.toFixed(2)), m.line)));
+    el('li', { class: 'dialogue', 'data-line': m.line }, el('span', { class: 'time' }, m.time.toFixed(2)), m.line)));
   document.getElementById('statuses').replaceChildren(...view.statuses.map(s =>
     el('span', { class: 'status ' + s.level, 'data-status': s.name }, s.name + ': ' + s.message)));
   if (view.mode === 'replay' && view.span) {

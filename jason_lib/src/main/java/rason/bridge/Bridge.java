@@ -249,6 +249,11 @@ public final class Bridge implements Fleet.Listener {
         mindReader = new MindReader(maxItems, maxChars);
     }
 
+    /** Where Jason's web mind inspector of this process is served (loopback), "" if no agent asked for it. */
+    public String mindInspectorUrl() {
+        return rason.infra.LoopbackMindInspector.url();
+    }
+
     public MindReader mindReader() {
         return mindReader;
     }

@@ -75,6 +75,8 @@ public class RasonLocalMAS extends RunLocalMAS {
         addInitArg("no-rmi", true);
         addInitArg("no-mbean", true);
         addInitArg("no-mindinspector", true);
+        if (!(Config.get() instanceof RasonConfig)) // Jason's mind inspector on loopback (mindinspector option)
+            Config.setClassFactory(RasonConfig.class.getName());
         Config.get().put(Config.START_WEB_MI, "false");
         setupLogger();
 
@@ -322,6 +324,7 @@ public class RasonLocalMAS extends RunLocalMAS {
             t.join(Math.max(1, deadline - System.currentTimeMillis()));
             allEnded &= !t.isAlive();
         }
+        jason.architecture.MindInspectorWeb.stop(); // its port closes with the agents
         return allEnded;
     }
 }

@@ -34,8 +34,13 @@ public final class RunningAgents implements AfterEachCallback {
 
     /** Starts agent with program (in dir) at ROS time 100 s with a 60 s action timeout. */
     public RosAgArch start(Path dir, String agent, String program) throws Exception {
+        return start(dir, agent, program, "");
+    }
+
+    /** The same, with the agent's .mas2j options (e.g. {@code [mindinspector="web(cycle,html,no_history)"]}). */
+    public RosAgArch start(Path dir, String agent, String program, String options) throws Exception {
         Files.writeString(dir.resolve(agent + ".asl"), program);
-        Files.writeString(dir.resolve("test.mas2j"), "MAS test { agents: " + agent + "; }");
+        Files.writeString(dir.resolve("test.mas2j"), "MAS test { agents: " + agent + " " + options + "; }");
         bridge.attach();
         bridge.setActionTimeoutNanos(60 * SECOND);
         bridge.tick(100 * SECOND);
