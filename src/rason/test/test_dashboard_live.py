@@ -14,11 +14,27 @@ import rostest
 
 import rospkg
 sys.path.insert(0, os.path.join(rospkg.RosPack().get_path('rason_dashboard'), 'test'))
-from browser import attributes, chromium, texts, wait_until  # noqa: E402
+from browser import attributes, chromium, set_slider, texts, wait_until  # noqa: E402
 from rason_dashboard.replay import load_bag  # noqa: E402
 from rason_dashboard.server import DashboardServer  # noqa: E402
 
 RUN = 180.0  # s (wall) for the whole case study at rate 2
+
+
+def plans(view, agent):
+    """The plans of agent's intentions in a dashboard view."""
+    return [plan for robot in view['robots'] for a in robot['agents'] if a['name'] == agent
+            for intention in a['intentions'] for plan in intention['plans']]
+
+
+def first_time(timeline, condition, step=0.1):
+    """The first time (s, step apart) at which condition(view) holds, or None."""
+    first, last = timeline.span()
+    for k in range(int((last - first) / step) + 1):
+        t = first + k * step
+        if condition(timeline.view(t)):
+            return t
+    return None
 
 
 def dialogue(driver):
@@ -46,8 +62,11 @@ class TestDashboardLive(unittest.TestCase):
         self.assertEqual(sorted(attributes(driver, '[data-robot]', 'data-robot')),
                          ['/faulty/rason_mas', '/helper/rason_mas', '/third/rason_mas'])
         self.assertIn('charge(90)[source(self)]', texts(driver, '[data-agent=third_courier] .belief'))
-        wait_until(driver, lambda d: any(p for p in texts(d, '[data-agent=helper] .plan')), timeout=60)
-        wait_until(driver, lambda d: 'both_actuators' in ' '.join(texts(d, '[data-status="rason/diagnosis"]')),
+        # an intention that lasts (the helper's come and go in seconds; they are checked in the replay)
+        wait_until(driver, lambda d: any('awaitParcel' in p for p in texts(d, '[data-agent=third_courier] .plan')),
+                   timeout=30)
+        # the diagnosis_reporter's words: "faulty: fault in both actuators (evidence)"
+        wait_until(driver, lambda d: 'fault in both actuators' in ' '.join(texts(d, '[data-status="rason/diagnosis"]')),
                    timeout=RUN)
         wait_until(driver, lambda d: 'faulty -> helper: achieve thanks' in dialogue(d), timeout=30)
         live_dialogue = dialogue(driver)
@@ -70,6 +89,14 @@ class TestDashboardLive(unittest.TestCase):
         wait_until(driver, lambda d: texts(d, '[data-status="rason/diagnosis"]') == live_diagnosis)
         replayed = dialogue(driver)
         self.assertEqual(replayed[:len(live_dialogue)], live_dialogue)
+        # back to when the helper searched for Faulty: its plan is on the page
+        searching = first_time(timeline, lambda view: any(
+            'findRobot' in plan for plan in plans(view, 'helper')))
+        self.assertIsNotNone(searching, 'no findRobot intention of the helper in the bag')
+        first, last = timeline.span()
+        set_slider(driver, (searching - first) / (last - first) + 0.001)
+        wait_until(driver, lambda d: any('findRobot' in p for p in texts(d, '[data-agent=helper] .plan')))
+        self.assertNotEqual(texts(driver, '[data-status="rason/diagnosis"]'), live_diagnosis)
 
 
 if __name__ == '__main__':

@@ -39,3 +39,10 @@ def attributes(driver, css, name):
 def wait_until(driver, condition, timeout=20.0):
     """condition(driver) true within timeout; the last value, or raises TimeoutException."""
     return WebDriverWait(driver, timeout, poll_frequency=0.1).until(condition)
+
+
+def set_slider(driver, fraction):
+    """Moves the replay's time slider to fraction (0: the bag's start, 1: its end) as a user would."""
+    driver.execute_script(
+        "const s = document.getElementById('slider'); s.value = s.max * arguments[0];"
+        "s.dispatchEvent(new Event('input'));", fraction)

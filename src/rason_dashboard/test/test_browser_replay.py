@@ -7,7 +7,7 @@ import sys
 import pytest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from browser import attributes, chromium, texts, wait_until  # noqa: E402
+from browser import attributes, chromium, set_slider, texts, wait_until  # noqa: E402
 from dashboard_data import case_study_bag  # noqa: E402
 from rason_dashboard.replay import load_bag  # noqa: E402
 from rason_dashboard.server import DashboardServer  # noqa: E402
@@ -24,12 +24,6 @@ def page(tmp_path):
     yield driver
     driver.quit()
     server.stop()
-
-
-def set_slider(driver, fraction):
-    driver.execute_script(
-        "const s = document.getElementById('slider'); s.value = s.max * arguments[0];"
-        "s.dispatchEvent(new Event('input'));", fraction)
 
 
 def test_the_end_of_the_run_shows_robots_agents_dialogue_and_diagnosis(page):

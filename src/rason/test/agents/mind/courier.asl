@@ -8,3 +8,6 @@ charge(90).
 +!deliver(P) <- !carry(P); +delivered(P); .print("delivered ", P).
 +!carry(P) <- deliver(P).
 -!deliver(P)[error(R)] <- +failed(P, R).
+
+// started with this goal (courier_waiting.mas2j), it waits, as an intention, for a parcel
++!awaitParcel <- .wait({+go(_)}).
