@@ -9,6 +9,7 @@ import unittest
 
 import rospy
 import rostest
+import tf2_ros
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'nodes'))
 from sim_testing import SimRobot, wrap_degrees  # noqa: E402
@@ -53,6 +54,8 @@ class TestSimMotion(unittest.TestCase):
         rospy.wait_for_service('/faulty/inject_fault', timeout=30)
         cls.inject_fault = rospy.ServiceProxy('/faulty/inject_fault', FaultInjector)
         assert cls.robot.wait_connected(), 'decomposer or simulator not listening'
+        cls.tf = tf2_ros.Buffer()
+        cls.tf_listener = tf2_ros.TransformListener(cls.tf)
 
     def setUp(self):
         self.inject_fault('cancel')
@@ -79,6 +82,17 @@ class TestSimMotion(unittest.TestCase):
         rospy.loginfo('turn(90): turned %.2f deg', turned)
         self.assertAlmostEqual(turned, -90.0, delta=3.0)  # turn(+D) is clockwise
         self.assertLess(self.moved(start), 0.03)
+
+    def test_world_frame_puts_the_odometry_where_the_robot_is(self):
+        """world -> faulty/odom (tf_static, made again after a set_pose) and the odometry
+        place the robot at its true pose: rviz shows both in the fixed frame world."""
+        self.assertEqual(self.robot.act('move', 0.5), Event.OK)
+        x, y, yaw = self.robot.pose()
+        t = self.tf.lookup_transform('world', 'faulty/base_footprint', rospy.Time(0), rospy.Duration(5)).transform
+        self.assertAlmostEqual(t.translation.x, x, delta=0.02)
+        self.assertAlmostEqual(t.translation.y, y, delta=0.02)
+        tf_yaw = 2 * math.atan2(t.rotation.z, t.rotation.w)
+        self.assertLess(abs(wrap_degrees(math.degrees(tf_yaw - yaw))), 2.0)
 
     def test_both_actuators_no_progress_and_robot_still(self):
         self.assertIn('both_actuators', self.inject_fault('both_actuators').return_message)

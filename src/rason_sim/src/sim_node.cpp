@@ -142,6 +142,7 @@ struct Robot {
   ros::Publisher odom_pub, true_pose_pub, image_pub, depth_pub, cloud_pub, info_pub;
 
   Robot(const RobotConfig& c, const BaseGeometry& base) : config(c), odometry(base) {}
+  geometry_msgs::TransformStamped world_to_odom;
 };
 
 int requireId(const mjModel* m, mjtObj type, const std::string& name) {
@@ -302,6 +303,7 @@ class Simulator {
   void setUpRobot(ros::NodeHandle& nh, const RobotConfig& config) {
     auto robot = std::make_shared<Robot>(config, world_.base);
     const std::string& n = config.name;
+    robot->world_to_odom = worldToOdom(n, config.start, robot->odometry);
     const int root = requireId(model_, mjOBJ_JOINT, rootJointName(n));
     robot->root_qpos = model_->jnt_qposadr[root];
     robot->root_qvel = model_->jnt_dofadr[root];
@@ -371,6 +373,9 @@ class Simulator {
       q[6] = std::sin(robot.teleport_pose.theta / 2.0);
       for (int i = 0; i < 6; ++i) data_->qvel[robot.root_qvel + i] = 0.0;
       mj_forward(model_, data_);
+      const Pose2D moved{robot.teleport_pose.x, robot.teleport_pose.y, robot.teleport_pose.theta};
+      robot.world_to_odom = worldToOdom(robot.config.name, moved, robot.odometry);
+      publishStaticTransforms();
     }
     // Like kobuki_node, stop when commands stop arriving.
     const bool fresh = now - robot.last_command <= cmd_vel_timeout_;
@@ -498,8 +503,28 @@ class Simulator {
     robot.info_pub.publish(info);
   }
 
+  // world -> <robot>/odom: where the robot's odometry frame lies in the world, so rviz (fixed
+  // frame world) can show each robot's odometry beside its true pose. At the start it is the
+  // start pose; a set_pose moves the robot, not its odometry, so the frame is worked out again.
+  static geometry_msgs::TransformStamped worldToOdom(const std::string& name, const Pose2D& world_base,
+                                                     const WheelOdometry& odom) {
+    const double yaw = world_base.yaw - odom.yaw();
+    const double c = std::cos(yaw), s = std::sin(yaw);
+    geometry_msgs::TransformStamped t;
+    t.header.stamp = ros::Time(0);
+    t.header.frame_id = "world";
+    t.child_frame_id = name + "/odom";
+    t.transform.translation.x = world_base.x - (c * odom.x() - s * odom.y());
+    t.transform.translation.y = world_base.y - (s * odom.x() + c * odom.y());
+    t.transform.rotation.z = std::sin(yaw / 2.0);
+    t.transform.rotation.w = std::cos(yaw / 2.0);
+    return t;
+  }
+
+  // /tf_static is latched: every message carries all static transforms.
   void publishStaticTransforms() {
     tf2_msgs::TFMessage tf;
+    for (auto& robot : robots_) tf.transforms.push_back(robot->world_to_odom);
     for (auto& robot : robots_) {
       if (robot->camera < 0) continue;
       // base_footprint -> optical frame (z forward, x right, y down).
@@ -515,7 +540,7 @@ class Simulator {
       t.transform.rotation.w = 0.5;
       tf.transforms.push_back(t);
     }
-    if (!tf.transforms.empty()) tf_static_pub_.publish(tf);
+    tf_static_pub_.publish(tf);
   }
 
   WorldConfig world_;
