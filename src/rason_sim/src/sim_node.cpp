@@ -7,13 +7,18 @@
 #include <mujoco/mujoco.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
+#include <rason_msgs/RobotSightings.h>
 #include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <tf2_msgs/TFMessage.h>
 
+#include <ros/callback_queue.h>
+
 #include <algorithm>
+#include <condition_variable>
+#include <mutex>
 #include <chrono>
 #include <cstring>
 #include <cmath>
@@ -128,6 +133,34 @@ WorldConfig worldFromParams(const ros::NodeHandle& pnh) {
 
 // ---- one simulated robot ----------------------------------------------------------------
 
+// Lockstep: the stamp (sim s) of the last frame published to a consumer and of the newest
+// frame the consumer reported done (vision_synth's robots_seen, stamped as the frame), with
+// the wall times of both. Reports arrive on a thread of their own, so done_wall is when the
+// report came, not when the simulation loop next looked.
+struct FrameAck {
+  std::mutex mutex;
+  std::condition_variable reported;
+  double sent = -1.0, done = -1.0;
+  std::chrono::steady_clock::time_point sent_wall, done_wall;
+
+  bool isDone() const { return sent < 0.0 || done >= sent - 1e-6; }
+
+  void onSent(double t) {
+    std::lock_guard<std::mutex> lock(mutex);
+    sent = t;
+    sent_wall = std::chrono::steady_clock::now();
+  }
+
+  void onDone(double stamp) {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!isDone() && stamp >= sent - 1e-6) done_wall = std::chrono::steady_clock::now();
+      done = std::max(done, stamp);
+    }
+    reported.notify_all();
+  }
+};
+
 struct Robot {
   RobotConfig config;
   int root_qpos = -1, root_qvel = -1, body = -1, camera = -1;
@@ -138,7 +171,8 @@ struct Robot {
   double linear = 0.0, angular = 0.0, last_command = -1e9;
   bool teleport = false;
   geometry_msgs::Pose2D teleport_pose;
-  ros::Subscriber cmd_vel_sub, set_pose_sub;
+  ros::Subscriber cmd_vel_sub, set_pose_sub, frame_ack_sub;
+  FrameAck frame_ack;
   ros::Publisher odom_pub, true_pose_pub, image_pub, depth_pub, cloud_pub, info_pub;
 
   Robot(const RobotConfig& c, const BaseGeometry& base) : config(c), odometry(base) {}
@@ -205,6 +239,9 @@ class Simulator {
     pnh.param("clock_rate", clock_rate_, 100.0);
     pnh.param("cmd_vel_timeout", cmd_vel_timeout_, 0.6);
     pnh.param("max_sim_time", max_sim_time_, 0.0);
+    pnh.param("lockstep", lockstep_, real_time_factor_ == 0.0);
+    pnh.param("frame_ack_topic", frame_ack_topic_, std::string("robots_seen"));
+    pnh.param("frame_ack_timeout", frame_ack_timeout_, 2.0);
     int seed = 1;
     pnh.param("seed", seed, 1);
     rng_.seed(static_cast<unsigned>(seed));
@@ -215,6 +252,8 @@ class Simulator {
     noise_.max_range = world_.camera.max_range;
     if (real_time_factor_ < 0.0 || odom_rate_ <= 0.0 || camera_rate_ <= 0.0 || clock_rate_ <= 0.0)
       throw std::invalid_argument("rates must be > 0 and real_time_factor >= 0");
+    if (!(frame_ack_timeout_ > 0.0 && frame_ack_timeout_ < 3600.0))
+      throw std::invalid_argument("~frame_ack_timeout must be in (0, 3600) s");
     if (noise_.dropout < 0.0 || noise_.dropout >= 1.0)
       throw std::invalid_argument("~camera/depth_dropout must be in [0, 1)");
 
@@ -224,12 +263,19 @@ class Simulator {
     tf_pub_ = nh.advertise<tf2_msgs::TFMessage>("/tf", 100);
     tf_static_pub_ = nh.advertise<tf2_msgs::TFMessage>("/tf_static", 1, true);
     for (const RobotConfig& config : world_.robots) setUpRobot(nh, config);
+    if (lockstep_) {
+      ack_spinner_.reset(new ros::AsyncSpinner(1, &ack_queue_));
+      ack_spinner_->start();
+    }
     publishStaticTransforms();
-    ROS_INFO("rason_sim: %zu robots, real-time factor %.2f (0 = as fast as possible), seed %d",
-             robots_.size(), real_time_factor_, seed);
+    ROS_INFO("rason_sim: %zu robots, real-time factor %.2f (0 = as fast as possible), seed %d%s",
+             robots_.size(), real_time_factor_, seed,
+             lockstep_ ? ("; lockstep: each camera frame waits for <robot>/" + frame_ack_topic_ +
+                          " of the one before").c_str() : "");
   }
 
   ~Simulator() {
+    if (ack_spinner_) ack_spinner_->stop();
     renderer_.reset();
     if (data_) mj_deleteData(data_);
     if (model_) mj_deleteModel(model_);
@@ -240,6 +286,7 @@ class Simulator {
     const int substeps = std::max(1, static_cast<int>(std::lround(control_period / model_->opt.timestep)));
     const auto wall_start = std::chrono::steady_clock::now();
     WallPacer pacer(real_time_factor_, wall_start);
+    auto step_wall = wall_start;
     double next_odom = 0.0, next_camera = 0.0;
     while (ros::ok()) {
       ros::spinOnce();
@@ -256,12 +303,25 @@ class Simulator {
         if (next_odom < t) next_odom = t;  // never try to catch up with a burst
       }
       if (t >= next_camera) {
-        for (auto& robot : robots_) publishCamera(*robot, t);
+        for (auto& robot : robots_) {
+          if (lockstep_) awaitFrameDone(*robot);
+          if (publishCamera(*robot, t) && lockstep_ && robot->frame_ack_sub.getNumPublishers() > 0)
+            robot->frame_ack.onSent(t);
+        }
         next_camera += 1.0 / camera_rate_;
         if (next_camera < t) next_camera = t;
       }
       if (max_sim_time_ > 0.0 && t >= max_sim_time_) break;
-      if (real_time_factor_ > 0.0) {
+      if (lockstep_ && real_time_factor_ == 0.0) {
+        // Not flat out between frames: a burst of simulated time while the frame is being
+        // processed would leave the controllers and agents (wall-clock CPU) behind the world
+        // as much as a lagging camera did. A step takes its share of the wall time a frame
+        // needs; until every camera's consumer is up (nodes starting), about real time.
+        const double factor = framesConsumed() ? lockstep_factor_ : 1.0;
+        std::this_thread::sleep_until(step_wall + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                      std::chrono::duration<double>(control_period / factor)));
+        step_wall = std::chrono::steady_clock::now();
+      } else if (real_time_factor_ > 0.0) {
         const double dropped = pacer.wait(t);
         if (dropped > 0.0)
           ROS_WARN_THROTTLE(10.0, "rason_sim: the CPU cannot keep up with real-time factor %.2f; "
@@ -334,6 +394,13 @@ class Simulator {
       robot->depth_pub = nh.advertise<sensor_msgs::Image>(n + "/camera/depth_registered/image_raw", 2);
       robot->cloud_pub = nh.advertise<sensor_msgs::PointCloud2>(n + "/camera/depth_registered/points", 2);
       robot->info_pub = nh.advertise<sensor_msgs::CameraInfo>(n + "/camera/rgb/camera_info", 2);
+      if (lockstep_) {
+        auto options = ros::SubscribeOptions::create<rason_msgs::RobotSightings>(
+            n + "/" + frame_ack_topic_, 10,
+            [raw](const rason_msgs::RobotSightings::ConstPtr& msg) { raw->frame_ack.onDone(msg->header.stamp.toSec()); },
+            ros::VoidPtr(), &ack_queue_);
+        robot->frame_ack_sub = nh.subscribe(options);
+      }
     }
     robots_.push_back(robot);
   }
@@ -431,12 +498,46 @@ class Simulator {
     tf_pub_.publish(tf);
   }
 
-  void publishCamera(Robot& robot, double t) {
-    if (robot.camera < 0 || !renderer_) return;
+  // True when every robot with a camera has a consumer reporting its frames done.
+  bool framesConsumed() const {
+    for (const auto& robot : robots_)
+      if (robot->camera >= 0 && robot->frame_ack_sub.getNumPublishers() == 0) return false;
+    return true;
+  }
+
+  // Lockstep: the next frame waits (wall clock, up to ~frame_ack_timeout) until the consumer
+  // has reported the last one done, so a fast simulation never leaves the camera pipeline,
+  // and the agents reading it, behind the world: seen in simulated time, a frame takes at
+  // most one camera period to process at any speed.
+  void awaitFrameDone(Robot& robot) {
+    FrameAck& ack = robot.frame_ack;
+    std::unique_lock<std::mutex> lock(ack.mutex);
+    if (ack.sent < 0.0) return;
+    const auto deadline = std::chrono::steady_clock::now() +
+                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              std::chrono::duration<double>(frame_ack_timeout_));
+    if (ack.reported.wait_until(lock, deadline, [&ack] { return ack.isDone(); })) {
+      // the pace for the next period: a camera period in (a little more than) the wall
+      // time the consumer took for this frame, smoothed
+      const double took = std::chrono::duration<double>(ack.done_wall - ack.sent_wall).count();
+      frame_wall_ = frame_wall_ <= 0.0 ? took : 0.8 * frame_wall_ + 0.2 * took;
+      lockstep_factor_ = std::clamp(1.0 / (camera_rate_ * kLockstepMargin * std::max(frame_wall_, 1e-4)),
+                                    kMinLockstepFactor, kMaxLockstepFactor);
+    } else {
+      ROS_WARN_THROTTLE(10.0, "rason_sim: no %s/%s for the frame at %.2f s within %.1f s (wall); "
+                        "going on without it", robot.config.name.c_str(), frame_ack_topic_.c_str(),
+                        ack.sent, frame_ack_timeout_);
+    }
+    ack.sent = -1.0;
+  }
+
+  // Renders and publishes robot's camera at t; false when it has none or nobody looks.
+  bool publishCamera(Robot& robot, double t) {
+    if (robot.camera < 0 || !renderer_) return false;
     const bool cloud_wanted = robot.cloud_pub.getNumSubscribers() > 0;
     const bool wanted = cloud_wanted || robot.image_pub.getNumSubscribers() > 0 ||
                         robot.depth_pub.getNumSubscribers() > 0;
-    if (!wanted) return;  // rendering is the costly part; skip it when nobody looks
+    if (!wanted) return false;  // rendering is the costly part; skip it when nobody looks
     renderer_->render(model_, data_, robot.camera, rgb_, depth_);
     sensor_msgs::Image image;
     sensor_msgs::PointCloud2 cloud;
@@ -455,6 +556,7 @@ class Simulator {
     if (robot.depth_pub.getNumSubscribers() > 0) publishDepth(robot, image.header);
     if (cloud_wanted) publishCloud(robot, image.header, cloud);
     publishInfo(robot, image.header);
+    return true;
   }
 
   void publishDepth(Robot& robot, const std_msgs::Header& header) {
@@ -546,6 +648,14 @@ class Simulator {
   WorldConfig world_;
   double real_time_factor_ = 1.0, odom_rate_ = 50.0, camera_rate_ = 10.0, clock_rate_ = 100.0;
   double cmd_vel_timeout_ = 0.6, max_sim_time_ = 0.0;
+  bool lockstep_ = false;
+  ros::CallbackQueue ack_queue_;               // frame reports, served by ack_spinner_
+  std::unique_ptr<ros::AsyncSpinner> ack_spinner_;
+  double lockstep_factor_ = 1.0;  // the pace at factor 0 with lockstep, from frame_wall_
+  double frame_wall_ = 0.0;       // s of wall time a frame's processing takes (smoothed)
+  static constexpr double kLockstepMargin = 1.1, kMinLockstepFactor = 0.2, kMaxLockstepFactor = 50.0;
+  std::string frame_ack_topic_;
+  double frame_ack_timeout_ = 2.0;
   DepthNoise noise_;
   std::mt19937 rng_;
   mjModel* model_ = nullptr;
