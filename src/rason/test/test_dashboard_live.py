@@ -87,8 +87,9 @@ class TestDashboardLive(unittest.TestCase):
         driver.get(server.url)
         wait_until(driver, lambda d: d.find_element('id', 'slider').is_displayed())
         wait_until(driver, lambda d: texts(d, '[data-status="rason/diagnosis"]') == live_diagnosis)
-        replayed = dialogue(driver)
-        self.assertEqual(replayed[:len(live_dialogue)], live_dialogue)
+        # the same lines; two sent by different robots milliseconds apart (the helper's
+        # feedback, Faulty's thanks) may reach the recorder and the dashboard in either order
+        self.assertCountEqual(dialogue(driver), live_dialogue)
         # back to when the helper searched for Faulty: its plan is on the page
         searching = first_time(timeline, lambda view: any(
             'findRobot' in plan for plan in plans(view, 'helper')))
