@@ -6,6 +6,7 @@
 #include <geometry_msgs/Twist.h>
 #include <mujoco/mujoco.h>
 #include <nav_msgs/Odometry.h>
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <rason_msgs/RobotSightings.h>
 #include <rosgraph_msgs/Clock.h>
@@ -14,15 +15,13 @@
 #include <sensor_msgs/PointCloud2.h>
 #include <tf2_msgs/TFMessage.h>
 
-#include <ros/callback_queue.h>
-
 #include <algorithm>
-#include <condition_variable>
-#include <mutex>
 #include <chrono>
-#include <cstring>
 #include <cmath>
+#include <condition_variable>
+#include <cstring>
 #include <memory>
+#include <mutex>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -174,9 +173,9 @@ struct Robot {
   ros::Subscriber cmd_vel_sub, set_pose_sub, frame_ack_sub;
   FrameAck frame_ack;
   ros::Publisher odom_pub, true_pose_pub, image_pub, depth_pub, cloud_pub, info_pub;
+  geometry_msgs::TransformStamped world_to_odom;
 
   Robot(const RobotConfig& c, const BaseGeometry& base) : config(c), odometry(base) {}
-  geometry_msgs::TransformStamped world_to_odom;
 };
 
 int requireId(const mjModel* m, mjtObj type, const std::string& name) {
@@ -312,7 +311,7 @@ class Simulator {
         if (next_camera < t) next_camera = t;
       }
       if (max_sim_time_ > 0.0 && t >= max_sim_time_) break;
-      if (lockstep_ && real_time_factor_ == 0.0) {
+      if (lockstep_ && real_time_factor_ == 0.0 && hasCamera()) {
         // Not flat out between frames: a burst of simulated time while the frame is being
         // processed would leave the controllers and agents (wall-clock CPU) behind the world
         // as much as a lagging camera did. A step takes its share of the wall time a frame
@@ -496,6 +495,12 @@ class Simulator {
       r.true_pose_pub.publish(truth);
     }
     tf_pub_.publish(tf);
+  }
+
+  bool hasCamera() const {
+    for (const auto& robot : robots_)
+      if (robot->camera >= 0) return true;
+    return false;
   }
 
   // True when every robot with a camera has a consumer reporting its frames done.
