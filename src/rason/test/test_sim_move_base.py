@@ -113,7 +113,13 @@ class TestSimMoveBase(unittest.TestCase):
         rospy.loginfo('zero twist %.0f ms after the cancel', (after[0][0] - cancelled_at) * 1e3)
         # once 1.5 s of sim time has passed, the robot has been at rest for the last 0.5 s of it
         coast, spread = self.watch.rest_after(sim_cancelled)
-        self.assertEqual(self.watch.commands_since(cancelled_at), [(0.0, 0.0)])
+        # a control tick already under way when the cancel was sent may still come out
+        # before the zero twist (CI saw one); none after it
+        since = self.watch.commands_since(cancelled_at)
+        self.assertIn((0.0, 0.0), since)
+        first_zero = since.index((0.0, 0.0))
+        self.assertLessEqual(first_zero, 1, since)
+        self.assertEqual(since[first_zero:], [(0.0, 0.0)], since)
         rospy.loginfo('after the cancel: %.3f m coasting, then %.4f m in 0.5 s', coast, spread)
         self.assertLess(spread, 0.002)
         self.assertLess(coast, 0.05)
