@@ -124,6 +124,7 @@ WorldConfig worldFromParams(const ros::NodeHandle& pnh) {
     robot.camera = flag(s, "camera", false);
     robot.left_marker = flag(s, "left_marker", false);
     robot.right_marker = flag(s, "right_marker", false);
+    robot.back_marker = flag(s, "back_marker", false);
     world.robots.push_back(robot);
   }
   validate(world);

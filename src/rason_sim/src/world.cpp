@@ -57,6 +57,11 @@ void writeRobot(std::ostringstream& xml, const RobotConfig& robot, const WorldCo
         << ' ' << marker_half << "' pos='0 " << -kMarkerSeparation / 2.0 << ' ' << marker_z
         << "' mass='0.02' material='orange' contype='0' conaffinity='0'/>\n";
   }
+  if (robot.back_marker) {
+    xml << "      <geom name='" << n << "_back_marker' type='cylinder' size='" << kMarkerRadius
+        << ' ' << marker_half << "' pos='" << -kBackMarkerOffset << " 0 " << marker_z
+        << "' mass='0.02' material='blue' contype='0' conaffinity='0'/>\n";
+  }
   if (robot.camera) {
     const CameraConfig& cam = world.camera;
     // A MuJoCo camera looks along its -z with +x to the image's right: image right is the
@@ -134,6 +139,7 @@ std::string buildMjcf(const WorldConfig& world) {
       << "    <material name='obstacle' rgba='0.4 0.4 0.45 1' specular='0.05'/>\n"
       << "    <material name='green' rgba='0.05 0.65 0.15 1' specular='0.1'/>\n"
       << "    <material name='orange' rgba='1 0.45 0 1' specular='0.1'/>\n"
+      << "    <material name='blue' rgba='0.1 0.3 0.95 1' specular='0.1'/>\n"
       << "  </asset>\n"
       << "  <worldbody>\n";
   for (const LightConfig& light : world.lights) {

@@ -24,6 +24,7 @@ struct RobotConfig {
   bool camera = false;          // Kinect-like RGB-D camera
   bool left_marker = false;     // green cylinder on the robot's left
   bool right_marker = false;    // orange cylinder on the robot's right
+  bool back_marker = false;     // blue cylinder behind the middle of the two (thesis §8.1)
 };
 
 struct LightConfig {
@@ -64,6 +65,9 @@ constexpr double kMarkerSeparation = 0.227;
 constexpr double kMarkerRadius = 0.02;
 constexpr double kMarkerBottom = 0.12;
 constexpr double kMarkerTop = 0.45;
+// The third cylinder: behind the middle of the other two, so the three are not in a line
+// and at least two are in view from any direction.
+constexpr double kBackMarkerOffset = 0.12;
 
 // Vertical field of view MuJoCo needs for a horizontal one at the given image size.
 double verticalFovDeg(const CameraConfig& camera);
