@@ -67,8 +67,9 @@ def test_dim_overhead_light_leaves_only_ambient_and_still_detects(angle, depth, 
     scene = vs.Scene((angle, depth, heading), light=0.3, light_from=(0.0, -1.0, 0.0))
     rgb, xyz = scene.render(noise=1.5, seed=5)
     d = det.Detector()
-    for mask in d.masks(rgb).values():
-        assert 0 < rgb[mask > 0].max() <= 0.3 * vs.AMBIENT * 255 + 8  # really dark
+    masks = d.masks(rgb)
+    for colour in ('green', 'orange'):  # the scene's robot has no third cylinder
+        assert 0 < rgb[masks[colour] > 0].max() <= 0.3 * vs.AMBIENT * 255 + 8  # really dark
     assert_pose(d.detect(rgb, xyz), scene.truth())
 
 
@@ -130,6 +131,62 @@ def test_one_cylinder_hidden_behind_a_post_reports_no_robot(side):
 def test_edge_on_robot_hides_one_cylinder_behind_the_other():
     # heading = θ + 90: both cylinders on the same line of sight
     assert detect(vs.Scene((10, 2.0, 100))) == []
+
+
+# ---------------------------------------------------------------- the third cylinder
+
+THREE = ('left', 'right', 'back')
+
+
+@pytest.mark.parametrize('heading', HEADINGS + [90, -90, 180])
+@pytest.mark.parametrize('angle, depth', PLACES)
+def test_three_cylinders_give_the_pose_from_any_side(angle, depth, heading):
+    scene = vs.Scene((angle, depth, heading), show=THREE)
+    found = detect(scene, seed=heading % 89)
+    assert_pose(found, scene.truth())
+    assert sum(b is not None for b in (found[0].left, found[0].right, found[0].back)) >= 2
+
+
+@pytest.mark.parametrize('angle, heading', [(10, 100), (-15, 75), (0, -90), (20, -70)])
+def test_edge_on_robot_with_a_third_cylinder_is_still_found(angle, heading):
+    # heading = θ ± 90: left and right on one line of sight, the third one beside them
+    two = vs.Scene((angle, 2.0, heading))
+    three = vs.Scene((angle, 2.0, heading), show=THREE)
+    if angle == 10 and heading == 100:
+        assert detect(two) == []  # the thesis's self-occlusion
+    found = detect(three)
+    assert_pose(found, three.truth())
+    assert found[0].back is not None
+
+
+@pytest.mark.parametrize('hidden', ['left', 'right'])
+@pytest.mark.parametrize('heading', [-30, 0, 45, 150])
+def test_a_hidden_side_cylinder_is_made_up_for_by_the_third(hidden, heading):
+    scene = vs.Scene((8, 2.0, heading), show=set(THREE) - {hidden})
+    found = detect(scene, seed=11)
+    assert_pose(found, scene.truth())
+    assert getattr(found[0], hidden) is None and found[0].back is not None
+
+
+@pytest.mark.parametrize('show', [('back',), ('left',), ('right',)])
+def test_one_of_three_cylinders_alone_is_no_robot(show):
+    assert detect(vs.Scene((0, 2.0, 0), show=show)) == []
+
+
+def test_a_robot_table_without_a_back_colour_ignores_a_blue_cylinder():
+    scene = vs.Scene((0, 2.0, 0), show=('left', 'back'))
+    assert detect(scene) != []
+    two = det.Detector(robots={'faulty': {'left': 'green', 'right': 'orange'}})
+    assert detect(scene, detector=two) == []
+
+
+def test_a_blue_cylinder_too_far_from_the_others_is_left_out():
+    # the third cylinder of a robot 0.12 m behind, and a decoy 0.5 m to the side
+    scene = vs.Scene((0, 2.0, 0), show=('left', 'right'),
+                     extra_pairs=[(0.5, 2.0, 0, 0.227, {'back'})])
+    found = detect(scene)
+    assert_pose(found, scene.truth())
+    assert found[0].back is None
 
 
 @pytest.mark.parametrize('scene', [vs.Scene(None), vs.Scene((45, 2.0, 0)),
@@ -233,6 +290,10 @@ def test_small_frames_work():
     {'robots': {'Faulty': {'left': 'green', 'right': 'orange'}}},
     {'robots': {'faulty': {'left': 'green', 'right': 'green'}}},
     {'robots': {'faulty': {'left': 'green'}}},
+    {'robots': {'faulty': {'left': 'green', 'right': 'orange', 'back': 'green'}}},
+    {'robots': {'faulty': {'left': 'green', 'right': 'orange', 'front': 'blue'}}},
+    {'robots': {'faulty': {'left': 'green', 'right': 'orange', 'back': 'purple'}}},
+    {'back_offset': 0},
     {'robots': {}},
     {'colors': {'green': {'h': [40, 200]}}},
     {'colors': {'green': {'h': [40]}}},
@@ -261,13 +322,13 @@ def test_hue_range_wraps_through_zero_for_reds():
 def test_default_hsv_ranges_accept_the_simulator_colours_dimmed_and_reject_grey():
     import cv2
     colors = det.parse_colors(det.DEFAULT_COLORS)
-    for name, rgb in (('green', vs.GREEN), ('orange', vs.ORANGE)):
+    for name, rgb in (('green', vs.GREEN), ('orange', vs.ORANGE), ('blue', vs.BLUE)):
         for scale in (1.0, 0.6, 0.3, 0.3 * vs.AMBIENT, 0.25 * 0.3):  # to 25 % of 30 % ambient
             pixel = np.array([[[round(c * scale * 255) for c in rgb]]], np.uint8)
             hsv = cv2.cvtColor(pixel, cv2.COLOR_RGB2HSV)
             assert colors[name].mask(hsv)[0, 0] == 255, (name, scale, pixel, hsv)
-            other = 'orange' if name == 'green' else 'green'
-            assert colors[other].mask(hsv)[0, 0] == 0
+            for other in set(colors) - {name}:
+                assert colors[other].mask(hsv)[0, 0] == 0, (name, other, scale)
     # greys, and the simulator's other materials (wall, plate, base, obstacle) lit or dim
     others = [(g, g, g) for g in (0.04, 0.25, 0.5, 1.0)] + [
         (0.75, 0.75, 0.73), (0.35, 0.3, 0.25), (0.18, 0.18, 0.2), (0.4, 0.4, 0.45)]

@@ -197,3 +197,48 @@ def test_the_rule_is_exact_only_modulo_360_when_yaw_crosses_180():
     turned = g.normalize_deg(end[2] - start[2])
     assert abs(value - turned) == pytest.approx(360.0, abs=0.05)
     assert g.normalize_deg(value) == pytest.approx(turned, abs=0.05)
+
+
+# ---------------------------------------------------------------- fit_pose
+
+def _on_robot(angle, depth, heading, layout):
+    """Optical-frame points of cylinders at ``layout`` ((forward, left) m) on a robot at
+    bearing ``angle``, depth ``depth``, heading ``heading`` (deg, clockwise, 0 = away)."""
+    x0, z0 = depth * math.tan(math.radians(angle)), depth
+    h = math.radians(heading)
+    fwd = (math.sin(h), math.cos(h))           # (x, z) of the robot's forward
+    left = (-math.cos(h), math.sin(h))         # its left: forward turned counter-clockwise
+    return [(x0 + f * fwd[0] + l * left[0], -0.1, z0 + f * fwd[1] + l * left[1])
+            for f, l in layout]
+
+
+LAYOUT = {'left': (0.0, 0.1135), 'right': (0.0, -0.1135), 'back': (-0.12, 0.0)}
+
+
+@pytest.mark.parametrize('roles', [('left', 'right'), ('left', 'back'), ('back', 'right'),
+                                   ('left', 'right', 'back')])
+@pytest.mark.parametrize('angle, depth, heading', [(0, 2.0, 0), (-20, 1.0, 30),
+                                                   (15, 3.0, -120), (5, 2.0, 95),
+                                                   (-10, 1.5, 180)])
+def test_fit_pose_recovers_the_pose_from_any_two_cylinders(roles, angle, depth, heading):
+    layout = [LAYOUT[r] for r in roles]
+    pose = g.fit_pose(_on_robot(angle, depth, heading, layout), layout)
+    assert pose.angle == pytest.approx(angle, abs=1e-9)
+    assert pose.depth == pytest.approx(depth, abs=1e-9)
+    assert g.normalize_deg(pose.heading - heading) == pytest.approx(0, abs=1e-9)
+    assert pose.yaw == pytest.approx(g.normalize_deg(heading + angle), abs=1e-9)
+
+
+def test_fit_pose_of_left_and_right_is_what_observe_gives():
+    left, right = (-0.13, -0.1, 2.04), (0.09, -0.1, 1.97)  # not quite 0.227 apart
+    fit = g.fit_pose([left, right], [LAYOUT['left'], LAYOUT['right']])
+    seen = g.observe(left, right)
+    for key in ('angle', 'depth', 'yaw', 'heading'):
+        assert getattr(fit, key) == pytest.approx(getattr(seen, key), abs=1e-9)
+
+
+def test_fit_pose_needs_two_points_with_a_place_each():
+    with pytest.raises(ValueError):
+        g.fit_pose([(0, 0, 2)], [(0, 0.1)])
+    with pytest.raises(ValueError):
+        g.fit_pose([(0, 0, 2), (0.2, 0, 2)], [(0, 0.1)])

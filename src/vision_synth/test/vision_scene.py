@@ -2,8 +2,8 @@
 
 Renders an RGB image and an organized xyz cloud (optical frame: x right, y down, z forward)
 of a scene made of a floor, a back wall, the robot's base and its two vertical cylinders
-(green on the robot's LEFT, orange on its RIGHT, 0.227 m apart), plus optional grey posts
-that can hide things. Lambertian shading; ``light`` scales all lighting (0.3 = dimmed).
+(green on the robot's LEFT, orange on its RIGHT, 0.227 m apart) and, if asked for, a blue
+third one 0.12 m behind their middle, plus optional grey posts that can hide things. Lambertian shading; ``light`` scales all lighting (0.3 = dimmed).
 
 Ground truth uses the same conventions as vision_synth.geometry but is computed here from
 the scene, independently: the robot at bearing ``angle`` (deg, + right), optical-axis
@@ -20,6 +20,7 @@ CX, CY = (WIDTH - 1) / 2.0, (HEIGHT - 1) / 2.0
 CAMERA_HEIGHT = 0.30      # m above the floor
 WALL_DEPTH = 4.5          # m
 SEPARATION = 0.227        # m between the cylinder axes
+BACK_OFFSET = 0.12        # m, the third (blue) cylinder behind the middle of the two
 CYLINDER_RADIUS = 0.02    # m
 CYLINDER_SPAN = (0.12, 0.45)  # m above the floor
 BASE_RADIUS = 0.177
@@ -27,6 +28,7 @@ BASE_SPAN = (0.01, 0.11)
 
 GREEN = (0.05, 0.65, 0.15)
 ORANGE = (1.0, 0.45, 0.0)
+BLUE = (0.1, 0.3, 0.95)
 WALL_GREY = (0.6, 0.6, 0.6)
 FLOOR_GREY = (0.45, 0.45, 0.45)
 BASE_GREY = (0.2, 0.2, 0.2)
@@ -65,6 +67,13 @@ def cylinder_centres(x, z, heading, separation=SEPARATION):
     return (x - half * rx, z - half * rz), (x + half * rx, z + half * rz)
 
 
+def back_centre(x, z, heading, offset=BACK_OFFSET):
+    """(x, z) of the third cylinder's axis: ``offset`` behind a robot at (x, z) facing
+    ``heading`` (forward is ``(sin h, cos h)``)."""
+    h = math.radians(heading)
+    return x - offset * math.sin(h), z - offset * math.cos(h)
+
+
 def _window(k, width, height, ox, oz, r, h0, h1):
     """Image rows/columns (slices) that a vertical cylinder in front of the camera can
     cover, a little generously; None when it is behind the camera."""
@@ -84,7 +93,7 @@ class Scene(object):
     """What the camera sees; build it, then :meth:`render`.
 
     :param robot: (angle, depth, heading) of the faulty robot, or None
-    :param show: which cylinders exist: subset of {'left', 'right'}
+    :param show: which cylinders exist: subset of {'left', 'right', 'back'}
     :param posts: grey vertical posts (x, z, radius), floor to 1 m
     :param light: lighting scale (1 full, 0.3 dimmed)
     :param light_from: direction towards the light (optical frame; (0, -1, 0) = overhead,
@@ -130,6 +139,8 @@ class Scene(object):
                 objs.append(left + (CYLINDER_RADIUS, CYLINDER_SPAN, GREEN))
             if 'right' in show:
                 objs.append(right + (CYLINDER_RADIUS, CYLINDER_SPAN, ORANGE))
+            if 'back' in show:
+                objs.append(back_centre(x, z, heading) + (CYLINDER_RADIUS, CYLINDER_SPAN, BLUE))
         for x, z, r in self.posts:
             objs.append((x, z, r, (0.0, 1.0), POST_GREY))
         return objs

@@ -10,7 +10,16 @@ Pairs: for each robot in the ``robots`` table, every (left colour, right colour)
 whose axis-to-axis 3-D distance is in ``[pair_min, pair_max]`` is a candidate; the one
 closest to ``pair_nominal`` wins; at most one robot per name. A single cylinder (the other
 one hidden) is therefore never a robot.
+
+A robot may carry a third cylinder (``back`` colour in its table), ``back_offset`` behind
+the middle of the other two: the thesis's remedy for self-occlusion (§8.1), since from any
+direction at least two of three cylinders that are not in a line are in view. Its
+pairs with the left and the right cylinder are then candidates too, with the same
+tolerance about their own nominal distance, and a consistent triple wins over any pair;
+the pose is the rigid fit of the cylinders seen to where they sit on the robot
+(:func:`geometry.fit_pose`). A single cylinder is still never a robot.
 """
+import itertools
 import math
 
 import cv2
@@ -23,16 +32,20 @@ from vision_synth import geometry, literals
 DEFAULT_COLORS = {
     'green': {'h': [40, 90], 's': [90, 255], 'v': [10, 255]},
     'orange': {'h': [4, 24], 's': [130, 255], 'v': [12, 255]},
+    'blue': {'h': [100, 130], 's': [120, 255], 'v': [10, 255]},
 }
 
-#: Agent name -> the colours of its left and right cylinders (seen from behind the robot).
-DEFAULT_ROBOTS = {'faulty': {'left': 'green', 'right': 'orange'}}
+#: Agent name -> the colours of its left and right cylinders (seen from behind the robot)
+#: and, optionally, of a third one behind their middle (``back``). A robot without the
+#: third cylinder is found by the other two as before.
+DEFAULT_ROBOTS = {'faulty': {'left': 'green', 'right': 'orange', 'back': 'blue'}}
 
 #: Detector options and their defaults (the node's ~params of the same names).
 DEFAULTS = {
     'pair_min': 0.22,          # m, shortest accepted distance between the cylinders
     'pair_max': 0.25,          # m, longest accepted distance
     'pair_nominal': 0.227,     # m, the real distance; the pair closest to it wins
+    'back_offset': 0.12,       # m, the third cylinder behind the middle of the other two
     'min_blob_area': 30,       # pixels after opening/closing
     'min_valid_points': 10,    # blob pixels with a finite 3-D point
     'kernel_size': 3,          # pixels, square structuring element of the opening/closing
@@ -117,21 +130,35 @@ def parse_colors(table):
 
 
 class Marker(object):
-    """A robot known by its cylinders: agent ``name``, ``left`` and ``right`` colour names."""
-    __slots__ = ('name', 'left', 'right')
+    """A robot known by its cylinders: agent ``name``, ``left`` and ``right`` colour names
+    and the ``back`` one's (None: the robot has two cylinders)."""
+    __slots__ = ('name', 'left', 'right', 'back')
 
-    def __init__(self, name, left, right):
-        self.name, self.left, self.right = name, left, right
+    def __init__(self, name, left, right, back=None):
+        self.name, self.left, self.right, self.back = name, left, right, back
+
+    @property
+    def roles(self):
+        """(role, colour) of each cylinder the robot carries."""
+        roles = [('left', self.left), ('right', self.right)]
+        return roles + [('back', self.back)] if self.back else roles
+
+    def describe(self):
+        """``green/orange`` or ``green/orange/blue`` (left/right[/back])."""
+        return '/'.join(colour for _, colour in self.roles)
 
     def __repr__(self):
-        return 'Marker(%r, left=%r, right=%r)' % (self.name, self.left, self.right)
+        return 'Marker(%r, left=%r, right=%r, back=%r)' % (self.name, self.left, self.right,
+                                                            self.back)
 
 
 def parse_robots(table, colors):
-    """``{agent: {left: colour, right: colour}}`` -> list of :class:`Marker`, sorted by name.
+    """``{agent: {left: colour, right: colour[, back: colour]}}`` -> list of
+    :class:`Marker`, sorted by name.
 
     :param colors: the known colour names
-    :raises ConfigError: a name that is not a Jason atom, an unknown colour, left == right
+    :raises ConfigError: a name that is not a Jason atom, an unknown colour, a colour used
+        twice by one robot
     """
     if not isinstance(table, dict) or not table:
         raise ConfigError('robots must be a non-empty mapping name -> {left, right}, got %r'
@@ -140,16 +167,17 @@ def parse_robots(table, colors):
     for name, spec in sorted(table.items()):
         if not literals.is_atom(name):
             raise ConfigError('robot name %r is not a Jason atom' % (name,))
-        if not isinstance(spec, dict) or set(spec) != {'left', 'right'}:
-            raise ConfigError('robot %s needs exactly {left: colour, right: colour}, got %r'
-                              % (name, spec))
-        for side in ('left', 'right'):
+        if not isinstance(spec, dict) or set(spec) not in ({'left', 'right'},
+                                                           {'left', 'right', 'back'}):
+            raise ConfigError('robot %s needs {left: colour, right: colour} and optionally '
+                              'back: colour, got %r' % (name, spec))
+        for side in sorted(spec):
             if spec[side] not in colors:
                 raise ConfigError('robot %s: %s colour %r is not in colors (%s)'
                                   % (name, side, spec[side], ', '.join(sorted(colors))))
-        if spec['left'] == spec['right']:
-            raise ConfigError('robot %s: left and right colours must differ' % name)
-        markers.append(Marker(name, spec['left'], spec['right']))
+        if len(set(spec.values())) != len(spec):
+            raise ConfigError('robot %s: its cylinders must have different colours' % name)
+        markers.append(Marker(name, spec['left'], spec['right'], spec.get('back')))
     return markers
 
 
@@ -177,11 +205,12 @@ class Blob(object):
 
 class Detection(object):
     """A robot found in a frame: its agent ``name``, its ``pose`` (:class:`geometry.Pose`),
-    and its ``left`` and ``right`` :class:`Blob`."""
-    __slots__ = ('name', 'pose', 'left', 'right')
+    and the :class:`Blob` of its ``left``, ``right`` and ``back`` cylinders (None: not
+    seen; at least two are)."""
+    __slots__ = ('name', 'pose', 'left', 'right', 'back')
 
-    def __init__(self, name, pose, left, right):
-        self.name, self.pose, self.left, self.right = name, pose, left, right
+    def __init__(self, name, pose, left, right, back=None):
+        self.name, self.pose, self.left, self.right, self.back = name, pose, left, right, back
 
     def literal(self):
         """``robot(Name,Angle,Depth,Yaw)`` in Jason syntax."""
@@ -246,6 +275,7 @@ class Detector(object):
             self.pair_min = float(opt['pair_min'])
             self.pair_max = float(opt['pair_max'])
             self.pair_nominal = float(opt['pair_nominal'])
+            self.back_offset = float(opt['back_offset'])
             self.min_blob_area = int(opt['min_blob_area'])
             self.min_valid_points = int(opt['min_valid_points'])
             self.kernel_size = int(opt['kernel_size'])
@@ -257,6 +287,8 @@ class Detector(object):
         if not 0 < self.pair_min <= self.pair_nominal <= self.pair_max:
             raise ConfigError('need 0 < pair_min <= pair_nominal <= pair_max, got %g, %g, %g'
                               % (self.pair_min, self.pair_nominal, self.pair_max))
+        if not 0 < self.back_offset < 1:
+            raise ConfigError('need 0 < back_offset < 1 m, got %g' % self.back_offset)
         if self.min_blob_area < 1 or self.min_valid_points < 1 or self.kernel_size < 1:
             raise ConfigError('min_blob_area, min_valid_points and kernel_size must be >= 1')
         if not 0 <= self.cylinder_radius < 1 or not 0 < self.fov < 180:
@@ -266,7 +298,11 @@ class Detector(object):
                               % (', '.join(ANGLE_METHODS), self.angle_method))
         self._kernel = np.ones((self.kernel_size, self.kernel_size), np.uint8)
         # Only the colours some robot uses are searched.
-        self._used = sorted({c for m in self.markers for c in (m.left, m.right)})
+        self._used = sorted({c for m in self.markers for _, c in m.roles})
+        half = self.pair_nominal / 2.0
+        # Where each cylinder sits on the robot: (forward, left) metres from its centre.
+        self._layout = {'left': (0.0, half), 'right': (0.0, -half),
+                        'back': (-self.back_offset, 0.0)}
 
     def masks(self, image, bgr=False):
         """Cleaned mask (uint8, 255 = colour) of every colour used by a robot.
@@ -327,8 +363,61 @@ class Detector(object):
                     best, best_error = (left, right, d), error
         return best
 
+    def _distance_error(self, role_a, blob_a, role_b, blob_b):
+        """|seen − nominal| distance of two cylinders, or None outside the tolerance
+        (``pair_min``/``pair_max`` about ``pair_nominal``, moved to the pair's nominal)."""
+        nominal = math.dist(self._layout[role_a], self._layout[role_b])
+        d = float(np.linalg.norm(blob_b.axis - blob_a.axis))
+        if not (nominal + self.pair_min - self.pair_nominal <= d
+                <= nominal + self.pair_max - self.pair_nominal):
+            return None
+        return abs(d - nominal)
+
+    def match(self, marker, blobs):
+        """The cylinders of ``marker`` seen in the frame: dict role -> :class:`Blob` of
+        the best consistent triple (every distance within tolerance, least summed error),
+        else of the best pair; None when no two fit.
+
+        :param blobs: dict colour -> list of :class:`Blob`
+        """
+        if marker.back is None:
+            best = self.pair(marker, blobs)
+            return None if best is None else {'left': best[0], 'right': best[1]}
+        roles = marker.roles
+        best, best_key = None, None
+        for size in (3, 2):
+            for chosen in itertools.combinations(roles, size):
+                for group in itertools.product(*(blobs.get(c, ()) for _, c in chosen)):
+                    error = 0.0
+                    for (i, a), (j, b) in itertools.combinations(enumerate(group), 2):
+                        e = self._distance_error(chosen[i][0], a, chosen[j][0], b)
+                        if e is None:
+                            break
+                        error += e
+                    else:
+                        if best is None or error < best_key:
+                            best, best_key = {r: g for (r, _), g in zip(chosen, group)}, error
+            if best is not None:  # a triple wins over any pair
+                return best
+        return None
+
+    def pose_of(self, seen, width, height, intrinsics):
+        """:class:`geometry.Pose` from ``seen`` (role -> Blob, see :meth:`match`)."""
+        left, right = seen.get('left'), seen.get('right')
+        if set(seen) == {'left', 'right'}:  # the thesis's two cylinders, as before
+            return geometry.observe(left.axis, right.axis,
+                                    self.angle_of(left, right, width, height, intrinsics))
+        roles = sorted(seen)
+        angle, separation = None, float('nan')
+        if left is not None and right is not None:
+            angle = self.angle_of(left, right, width, height, intrinsics)
+            separation = float(np.linalg.norm(right.axis - left.axis))
+        return geometry.fit_pose([seen[r].axis for r in roles],
+                                 [self._layout[r] for r in roles], angle, separation)
+
     def angle_of(self, left, right, width, height, intrinsics):
-        """θ of a pair by ``angle_method`` (None for 'cloud': the 3-D bearing is used)."""
+        """θ of a left/right pair by ``angle_method`` (None for 'cloud': the 3-D bearing is
+        used, as it is for a pose found without one of the two)."""
         if self.angle_method == 'cloud':
             return None
         u = (left.u + right.u) / 2.0
@@ -352,11 +441,9 @@ class Detector(object):
         blobs = {name: self.blobs(mask, xyz, name) for name, mask in masks.items()}
         found = []
         for marker in self.markers:
-            best = self.pair(marker, blobs)
-            if best is None:
+            seen = self.match(marker, blobs)
+            if seen is None:
                 continue
-            left, right, _ = best
-            angle = self.angle_of(left, right, width, height, intrinsics)
-            found.append(Detection(marker.name, geometry.observe(left.axis, right.axis, angle),
-                                   left, right))
+            found.append(Detection(marker.name, self.pose_of(seen, width, height, intrinsics),
+                                   seen.get('left'), seen.get('right'), seen.get('back')))
         return found

@@ -182,3 +182,35 @@ def observe(left_point, right_point, angle=None):
     psi = heading_deg(left, right)
     depth = (left[2] + right[2]) / 2.0
     return Pose(theta, depth, yaw_deg(psi, theta), psi, float(np.linalg.norm(right - left)))
+
+
+def fit_pose(points, layout, angle=None, separation=float('nan')):
+    """Pose of a robot from two or more of its cylinders: the rigid motion (turn, then
+    shift) that best puts where the cylinders sit on the robot onto where their axes are
+    seen, in the least-squares sense (2-D Kabsch: the centroids matched, the turn from the
+    summed cross and dot products about them). With only the left and right cylinders it
+    gives what :func:`observe` gives: the centre is their midpoint.
+
+    :param points: (x, y, z) axis points, optical frame, two or more
+    :param layout: (forward, left) metres of each of those cylinders from the robot's
+        centre, in the same order
+    :param angle: θ to use instead of the bearing of the fitted centre
+    :param separation: what :attr:`Pose.separation` holds (NaN: left and right not both seen)
+    :rtype: :class:`Pose`; depth is the optical-axis depth of the fitted centre
+    """
+    seen = np.array([[p[2], -p[0]] for p in points], dtype=float)  # from above: forward, left
+    model = np.asarray(layout, dtype=float)
+    if len(seen) < 2 or seen.shape != model.shape:
+        raise ValueError('fit_pose needs two or more points, one (forward, left) each')
+    seen_c, model_c = seen.mean(axis=0), model.mean(axis=0)
+    s, m = seen - seen_c, model - model_c
+    turn = math.atan2(float(np.sum(m[:, 0] * s[:, 1] - m[:, 1] * s[:, 0])),
+                      float(np.sum(m[:, 0] * s[:, 0] + m[:, 1] * s[:, 1])))
+    c, n = math.cos(turn), math.sin(turn)
+    forward, left = seen_c - np.array([c * model_c[0] - n * model_c[1],
+                                       n * model_c[0] + c * model_c[1]])
+    x, z = -left, forward
+    theta = math.degrees(math.atan2(x, z)) if angle is None else float(angle)
+    psi = normalize_deg(-math.degrees(turn))  # turn is counter-clockwise, ψ clockwise
+    return Pose(theta, float(z), yaw_deg(psi, theta), psi, float(separation))
+

@@ -35,11 +35,13 @@ Topics (relative names: run one node per robot, in the robot's namespace):
 
 Private parameters (defaults in ``config/vision_synth.yaml`` and :data:`detector.DEFAULTS`):
 
-- ``~robots`` (dict): agent name -> ``{left: colour, right: colour}``,
-  default ``{faulty: {left: green, right: orange}}``
+- ``~robots`` (dict): agent name -> ``{left: colour, right: colour[, back: colour]}``,
+  default ``{faulty: {left: green, right: orange, back: blue}}`` (a robot without the
+  third, ``back`` cylinder is found by the other two)
 - ``~colors`` (dict): colour -> ``{h: [lo, hi], s: [lo, hi], v: [lo, hi]}``, OpenCV HSV
   (H 0–180); see :data:`detector.DEFAULT_COLORS`
 - ``~pair_min`` 0.22, ``~pair_max`` 0.25, ``~pair_nominal`` 0.227 (m): cylinder pairing
+- ``~back_offset`` 0.12 (m): the third cylinder, behind the middle of the other two
 - ``~min_blob_area`` 30 (px), ``~min_valid_points`` 10, ``~kernel_size`` 3 (px)
 - ``~cylinder_radius`` 0.02 (m): visible surface -> axis correction
 - ``~angle_method`` ``cloud`` (3-D bearing; or ``pinhole``, ``thesis``), ``~fov`` 57 (deg)
@@ -251,7 +253,7 @@ def main():
     depth_image = bool(rospy.get_param('~depth_image', False))
     VisionSynthNode(det, source, use_image, max_stamp_diff, frame_counter, depth_image)
     rospy.loginfo('vision_synth: ready, source %s, robots %s, %s'
-                  % (source, ', '.join('%s=%s/%s' % (m.name, m.left, m.right)
+                  % (source, ', '.join('%s=%s' % (m.name, m.describe())
                                        for m in det.markers),
                      'points from camera/depth_registered/image_raw, colours from '
                      'camera/rgb/image_raw' if depth_image else 'colours from %s' % (
