@@ -107,6 +107,23 @@ def test_varied_dim_runs_leave_the_brightness_to_the_interaction():
     assert 'brightness' not in spec.args and 'depth_noise' in spec.args
 
 
+@pytest.mark.parametrize('make', [
+    lambda **kw: plan.make_plan(['left_actuator'], 2, 1, **kw),
+    lambda **kw: plan.make_mission_plan(['left_actuator'], 1, 1, **kw)])
+def test_third_marker_is_a_launch_argument_only_when_asked_for(make):
+    assert all('third_marker' not in s.args for s in make())
+    specs = make(third_marker=True)
+    assert all('third_marker:=true' in plan.launch_arguments(s, '/tmp/x.bag') for s in specs)
+    # the rest of the plan is what it was: the same poses and seeds
+    assert [dict(s.args, third_marker=None) for s in specs] == \
+        [dict(s.args, third_marker=None) for s in make()]
+
+
+def test_command_line_third_marker():
+    assert cli.parse_args(['--out', 'x', '--third-marker']).third_marker
+    assert not cli.parse_args(['--out', 'x']).third_marker
+
+
 def test_varied_is_not_nominal():
     with pytest.raises(plan.PlanError, match='varied'):
         plan.make_plan(['none'], 1, 1, jitter=False, varied=True)

@@ -149,6 +149,12 @@ def test_no_diagnosis_at_all_is_an_undiagnosed_column():
     assert matrix == {'left_actuator': {'undiagnosed': 1, 'right_actuator': 1}}
 
 
+def test_markdown_says_when_faulty_carries_the_third_cylinder():
+    assert 'third (blue) cylinder' not in report.markdown(META, results(), {})
+    text = report.markdown(dict(META, third_marker=True), results(), {})
+    assert 'interaction fault: none; Faulty carries the third (blue) cylinder' in text
+
+
 def test_markdown_has_the_confusion_matrix():
     lines = report.markdown(META, results(), {}).splitlines()
     assert '## Confusion matrix' in lines

@@ -2,7 +2,9 @@
 """vision_synth on images rendered by the simulator: the faulty robot teleported to known
 poses in front of the helper; robot(Name, Angle, Depth, Yaw) checked against the truth
 (Angle within 2 deg, Depth within 5 cm, Yaw within 10 deg), nothing in view -> [], one
-cylinder hidden -> no robot."""
+cylinder hidden -> no robot. With ``~three: true`` the faulty robot carries the third (blue)
+cylinder: it is also found edge-on (left and right on one line of sight) and with the
+orange cylinder behind the box."""
 import os
 import re
 import sys
@@ -82,6 +84,7 @@ class TestSimVision(unittest.TestCase):
     def setUpClass(cls):
         rospy.init_node('test_sim_vision')
         cls.dim = rospy.get_param('~dim', False)
+        cls.three = rospy.get_param('~three', False)
         cls.helper = SimRobot('helper')
         cls.faulty = SimRobot('faulty')
         cls.seen = Perceptions()
@@ -97,6 +100,8 @@ class TestSimVision(unittest.TestCase):
             grid = [(d, a, p) for d in (1.5, 2.5) for a in (-15, 15) for p in (0, 40)]
         else:
             grid = [(d, a, p) for d in (1.0, 2.0, 3.0) for a in (-20, 0, 20) for p in (-40, 0, 40, 160)]
+        if self.three:  # edge-on: left and right on one line of sight
+            grid += [(d, a, a + p) for d in (1.5, 2.5) for a in (-10, 10) for p in (-90, 90)]
         worst = [0.0, 0.0, 0.0]
         for depth, angle, psi in grid:
             # Faulty's centre at `depth` along the optical axis, `angle` to the right, heading psi.
@@ -125,7 +130,8 @@ class TestSimVision(unittest.TestCase):
         self.assertEqual(len(latest), 1, latest)
         self.assertRegex(latest[0], r'^cameraFrame\(\d+,\d+\)$')
 
-    def test_one_cylinder_hidden_gives_no_robot(self):
+    def test_one_cylinder_hidden(self):
+        """Gives no robot, or, with the third cylinder, the robot where it is."""
         # Helper turned round; the box at (-1.0, 0.06) stands in front of the orange cylinder.
         latest = self.place((0.0, 0.0, math.pi), (-2.0, 0.0, math.pi))
         image = rospy.wait_for_message('/helper/camera/rgb/image_raw', Image, timeout=10)
@@ -135,7 +141,15 @@ class TestSimVision(unittest.TestCase):
         orange = cv2.inRange(hsv, (4, 130, 12), (24, 255, 255)).sum() // 255
         self.assertGreater(green, 200, 'the green cylinder should be in view')
         self.assertLess(orange, 20, 'the orange cylinder should be hidden')
-        self.assertEqual(parse(latest), {})
+        if not self.three:
+            self.assertEqual(parse(latest), {})
+            return
+        truth = camera_truth(self.helper.pose(), self.faulty.pose())
+        seen = parse(latest).get('faulty')
+        self.assertIsNotNone(seen, latest)
+        self.assertLess(abs(seen[0] - truth[0]), 2.0, (seen, truth))
+        self.assertLess(abs(seen[1] - truth[1]), 0.05, (seen, truth))
+        self.assertLess(abs(wrap_degrees(seen[2] - truth[2])), 10.0, (seen, truth))
 
 
 if __name__ == '__main__':

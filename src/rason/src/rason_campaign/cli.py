@@ -58,6 +58,9 @@ def parse_args(argv):
     p.add_argument('--jobs', type=int, default=1,
                    help='runs at the same time, each on a master of its own (default 1); '
                    'the report is the same, the wall time shorter while the CPU has room')
+    p.add_argument('--third-marker', action='store_true',
+                   help='Faulty also carries a blue cylinder behind the other two (thesis '
+                   '§8.1): two of three are in view from any side')
     p.add_argument('--images', action='store_true', help='bags also hold the camera images')
     p.add_argument('--analyze-only', action='store_true',
                    help='no runs: report again from the bags in --bags')
@@ -185,11 +188,12 @@ def main(argv=None):
             faults = plan.parse_faults(args.faults)
             if args.scenario == 'fault_tolerance':
                 specs = plan.make_mission_plan(faults, args.runs, args.seed, args.fault_at,
-                                               args.interaction, args.rate, args.images)
+                                               args.interaction, args.rate, args.images,
+                                               args.third_marker)
             else:
                 specs = plan.make_plan(faults, args.runs, args.seed, args.interaction,
                                        args.rate, args.images, jitter=not args.no_jitter,
-                                       varied=args.varied)
+                                       varied=args.varied, third_marker=args.third_marker)
         except plan.PlanError as e:
             sys.exit('campaign: %s' % e)
         meta = {'command': 'rosrun rason campaign ' + ' '.join(
@@ -199,6 +203,8 @@ def main(argv=None):
                 'jitter': not args.no_jitter, 'timeout': args.timeout}
         if args.varied:
             meta['varied'] = True
+        if args.third_marker:
+            meta['third_marker'] = True
         if args.scenario != 'diagnosis':  # a diagnosis plan.json stays what it was
             del meta['jitter']            # the poses are spread by poses.spread_poses
             meta.update({'scenario': args.scenario, 'fault_at': args.fault_at})

@@ -12,7 +12,7 @@ import json
 from rason_campaign import stats
 from rason_campaign.mission import MISSION_LENGTH, TOLERANCE
 from rason_campaign.plan import ARMS, FAULTS
-from rason_campaign.report import DASH, confusion_table, fmt, percent, table
+from rason_campaign.report import DASH, MARKERS, confusion_table, fmt, percent, table
 
 TARGET_RECOVERY = 0.95      # completion rate every fault must reach with recovery
 TARGET_BASELINE = 0.0       # completion rate of the baseline under the four faults
@@ -190,9 +190,9 @@ def markdown(meta, results, figures):
     lines = ['# Fault-tolerance campaign', '',
              'Command: `%s`  ' % meta['command'],
              'Date: %s; %d run(s) per fault, each in both arms with the same seed and start '
-             'poses; seed %s, real-time factor %s, fault injected %s, interaction fault: %s.'
+             'poses; seed %s, real-time factor %s, fault injected %s, interaction fault: %s%s.'
              % (meta['date'], meta['runs'], meta['seed'], meta['rate'], when,
-                meta.get('interaction', 'none')),
+                meta.get('interaction', 'none'), MARKERS[bool(meta.get('third_marker'))]),
              '',
              'Arms: *recovery* = `fault_tolerance.launch` (diagnosis, then recovery); '
              '*baseline* = `faulty_helper.launch` with the same arguments (the thesis\'s '

@@ -160,14 +160,16 @@ def _check_options(runs, interaction, rate):
 
 
 def make_plan(faults, runs, seed, interaction='none', rate=1.0, images=False, jitter=True,
-              varied=False):
+              varied=False, third_marker=False):
     """The campaign's runs: ``runs`` per fault, faults in the order given, run numbers
     1..len(faults)*runs, run seed ``seed * 1000 + number``; start poses and lighting
     jittered about the thesis's (:func:`jittered_args`), nominal (``jitter`` False) or, with
     ``varied``, drawn by :func:`varied_args`.
 
     The run's ``interaction`` argument names the interaction fault; ``dim`` drops the
-    jittered brightness.
+    jittered brightness. ``third_marker`` gives Faulty its third cylinder in every run
+    (launch argument ``third_marker:=true``; left out otherwise, so such plans are as
+    before).
 
     :rtype: list of RunSpec
     :raises PlanError: on bad options.
@@ -186,18 +188,21 @@ def make_plan(faults, runs, seed, interaction='none', rate=1.0, images=False, ji
             args.update({'fault': fault, 'seed': run_seed, 'rate': rate,
                          'interaction': interaction,
                          'images': 'true' if images else 'false'})
+            if third_marker:
+                args['third_marker'] = 'true'
             plan.append(RunSpec(number, fault, run_seed, args))
     return plan
 
 
 def make_mission_plan(faults, runs, seed, fault_at=0.0, interaction='none', rate=1.0,
-                      images=False):
+                      images=False, third_marker=False):
     """The fault-tolerance campaign's runs: ``runs`` per fault, each made in both ARMS one
     after the other (recovery first) with the same seed ``seed * 1000 + k`` and the same
     start poses, drawn by :func:`rason_campaign.poses.spread_poses` from that seed.
 
     :param fault_at: seconds after Faulty first moves at which the fault is injected
         (0: at the start), in both arms
+    :param third_marker: Faulty carries its third cylinder in every run
     :rtype: list of RunSpec (2 * len(faults) * runs)
     :raises PlanError: on bad options.
     """
@@ -213,6 +218,8 @@ def make_mission_plan(faults, runs, seed, fault_at=0.0, interaction='none', rate
             args = spread_poses(run_seed)
             args.update({'fault': fault, 'fault_at': fault_at, 'seed': run_seed, 'rate': rate,
                          'interaction': interaction, 'images': 'true' if images else 'false'})
+            if third_marker:
+                args['third_marker'] = 'true'
             plan += [RunSpec(number, fault, run_seed, dict(args), arm) for arm in ARMS]
     return plan
 

@@ -95,6 +95,10 @@ def fault_table(fault, results, fault_summary):
     return table(header, rows)
 
 
+# What the report says of Faulty's cylinders (meta 'third_marker').
+MARKERS = {False: '', True: '; Faulty carries the third (blue) cylinder behind the other two'}
+
+
 def markdown(meta, results, figures):
     """The whole report.
 
@@ -107,8 +111,9 @@ def markdown(meta, results, figures):
     frac = summary['correct_fraction']
     lines = ['# Case study campaign', '',
              'Command: `%s`  ' % meta['command'],
-             'Date: %s; %d run(s) per fault, seed %s, real-time factor %s, interaction fault: %s.'
-             % (meta['date'], meta['runs'], meta['seed'], meta['rate'], meta['interaction']),
+             'Date: %s; %d run(s) per fault, seed %s, real-time factor %s, interaction fault: %s%s.'
+             % (meta['date'], meta['runs'], meta['seed'], meta['rate'], meta['interaction'],
+                MARKERS[bool(meta.get('third_marker'))]),
              '',
              'Times are simulated seconds (the recorded /clock). Step boundaries come from the '
              'recorded messages: start = Faulty\'s first `move` action, help = Faulty\'s '
