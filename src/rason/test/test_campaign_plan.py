@@ -86,7 +86,7 @@ def test_bad_options(kwargs):
         plan.make_plan(**options)
 
 
-def test_varied_runs_draw_poses_lighting_and_camera_noise_from_their_seed():
+def test_varied_runs_draw_poses_lighting_camera_noise_and_severity_from_their_seed():
     specs = plan.make_plan(['left_actuator'], 40, 3, varied=True)
     assert plan.make_plan(['left_actuator'], 40, 3, varied=True)[7].args == specs[7].args
     for spec in specs:
@@ -96,10 +96,13 @@ def test_varied_runs_draw_poses_lighting_and_camera_noise_from_their_seed():
         assert 0.6 <= a['brightness'] <= 1.2
         assert 1.0 <= a['depth_noise'] <= 2.0
         assert 0.0 <= a['depth_dropout'] <= 0.05
+        assert 0.3 <= a['severity'] <= 1.0
         # the poses are spread_poses's of the run's seed: the other draws leave them alone
         assert {k: a[k] for k in poses.spread_poses(spec.seed)} == \
             poses.spread_poses(spec.seed, plan.VARIED_DISTANCE, plan.VARIED_FACING_AWAY)
     assert len({s.args['depth_noise'] for s in specs}) > 30   # each run draws its own
+    severities = sorted(s.args['severity'] for s in specs)
+    assert severities[0] < 0.45 and severities[-1] > 0.85      # mild ones and near-total ones
 
 
 def test_varied_dim_runs_leave_the_brightness_to_the_interaction():
@@ -117,6 +120,42 @@ def test_third_marker_is_a_launch_argument_only_when_asked_for(make):
     # the rest of the plan is what it was: the same poses and seeds
     assert [dict(s.args, third_marker=None) for s in specs] == \
         [dict(s.args, third_marker=None) for s in make()]
+
+
+def _right_cylinder(args):
+    yaw = args['faulty_yaw']
+    return (args['faulty_x'] + plan.MARKER_SEPARATION / 2 * math.sin(yaw),
+            args['faulty_y'] - plan.MARKER_SEPARATION / 2 * math.cos(yaw))
+
+
+@pytest.mark.parametrize('args', [plan.NOMINAL] + [plan.varied_args(s) for s in range(1, 40)])
+def test_the_box_stands_on_helper_s_line_of_sight_in_front_of_the_orange_cylinder(args):
+    box = plan.occluding_box(args)
+    hx, hy = args['helper_x'], args['helper_y']
+    rx, ry = _right_cylinder(args)
+    bx, by = box['box_x'], box['box_y']
+    # on the segment from Helper to the cylinder (mm rounding), 0.5 m short of the cylinder
+    cross = (rx - hx) * (by - hy) - (ry - hy) * (bx - hx)
+    assert abs(cross) / math.hypot(rx - hx, ry - hy) < 2e-3
+    assert math.hypot(rx - bx, ry - by) == pytest.approx(plan.BOX_IN_FRONT, abs=2e-3)
+    assert math.hypot(bx - hx, by - hy) < math.hypot(rx - hx, ry - hy)
+
+
+def test_the_nominal_box_is_the_launch_file_s_default():
+    # faulty_helper.launch: box_at_x/box_at_y for interaction:=box
+    assert plan.occluding_box(plan.NOMINAL) == {'box_x': -1.076, 'box_y': -0.251}
+
+
+@pytest.mark.parametrize('make', [
+    lambda **kw: plan.make_plan(['left_actuator'], 2, 1, **kw),
+    lambda **kw: plan.make_plan(['left_actuator'], 2, 1, varied=True, **kw),
+    lambda **kw: plan.make_mission_plan(['left_actuator'], 1, 1, **kw)])
+def test_a_box_run_gets_its_box_for_its_own_poses_and_others_none(make):
+    assert all('box_x' not in s.args for s in make(interaction='occlusion'))
+    for spec in make(interaction='box'):
+        assert spec.args['interaction'] == 'box'
+        assert (spec.args['box_x'], spec.args['box_y']) == tuple(
+            plan.occluding_box(spec.args).values())
 
 
 def test_command_line_third_marker():
@@ -147,3 +186,30 @@ def test_output_dirs_puts_the_bags_under_the_report_by_default(tmp_path):
     out = tmp_path / 'report'
     assert cli.output_dirs(str(out)) == str(out / 'bags')
     assert (out / 'bags').is_dir()
+
+
+def _declared_args(launch):
+    import os
+    import xml.etree.ElementTree as ET
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'launch', launch)
+    return {a.get('name'): a for a in ET.parse(path).getroot().findall('arg')}
+
+
+@pytest.mark.parametrize('make', [
+    lambda **kw: plan.make_plan(plan.FAULTS, 1, 1, **kw),
+    lambda **kw: plan.make_plan(plan.FAULTS, 1, 1, varied=True, **kw),
+    lambda **kw: plan.make_mission_plan(plan.FAULTS, 1, 1, fault_at=2.0, **kw)])
+@pytest.mark.parametrize('interaction', sorted(plan.INTERACTIONS))
+def test_every_argument_a_run_passes_is_one_its_launch_file_declares(make, interaction):
+    # roslaunch stops at an argument its file does not declare
+    for spec in make(interaction=interaction, third_marker=True, images=True):
+        launch = spec.launch[-1]
+        declared = _declared_args(launch)
+        extra = set(dict(spec.args, record='true', bag='b')) - set(declared)
+        assert not extra, '%s does not declare %s' % (launch, sorted(extra))
+
+
+def test_the_launch_file_knows_the_same_interactions_as_the_plan():
+    known = _declared_args('faulty_helper.launch')['interaction_is_known'].get('value')
+    listed = known[known.index('[') + 1:known.index(']')]
+    assert sorted(v.strip(" '") for v in listed.split(',')) == sorted(plan.INTERACTIONS)

@@ -5,8 +5,8 @@ own seed (``seed * 1000 + run number``) which seeds both the simulator and the r
 jitter of the start poses (about ±5 cm, ±3°) and of the lighting (brightness 0.8-1.2).
 
 ``varied`` diagnosis runs (issue 18) are drawn far wider (:func:`varied_args`): any relative
-pose 1-3 m apart, Faulty facing away within ±30°, the Helper in any heading, and the
-camera's depth noise, dropouts and the lighting.
+pose 1-3 m apart, Faulty facing away within ±30°, the Helper in any heading, the
+camera's depth noise, dropouts, the lighting and the actuator fault's severity.
 
 Two scenarios: ``diagnosis`` (the thesis's case study, faulty_helper.launch) and
 ``fault_tolerance`` (issue 15), where each planned run is made twice with the same seed and
@@ -34,6 +34,10 @@ VARIED_FACING_AWAY = math.radians(30.0)      # Faulty's heading: bearing Helper 
 VARIED_BRIGHTNESS = (0.6, 1.2)
 VARIED_DEPTH_NOISE = (1.0, 2.0)              # times the Kinect's axial noise
 VARIED_DEPTH_DROPOUT = (0.0, 0.05)           # probability a depth pixel has no return
+# An actuator fault's severity (fault_injector ~severity): 1 the thesis's (the wheel gives
+# nothing) down to 0.3, where a 1 m move drifts past bad_move's 8 degrees after ~0.8 m;
+# much below it the fault is not noticed within the mission's 1 m moves at all.
+VARIED_SEVERITY = (0.3, 1.0)
 
 # Interaction faults (thesis §7.5-7.6): faulty_helper.launch's interaction:= argument sets
 # them; a jittered argument the interaction sets itself is left out (else it would win).
@@ -42,7 +46,14 @@ INTERACTIONS = {
     'dim': ('brightness',),      # the burnt lamp: a room at 30 % light
     'moved_light': (),           # the light over (2.5, -3) instead of the room's centre
     'occlusion': (),             # Faulty's orange cylinder hidden
+    'box': (),                   # a box hides it from Helper's start (occluding_box)
 }
+
+# The box of the 'box' interaction stands this far (m) in front of Faulty's orange cylinder,
+# on its line of sight from Helper's start: far enough that Faulty, turning on a wheel,
+# does not touch it.
+BOX_IN_FRONT = 0.5
+MARKER_SEPARATION = 0.227   # rason_sim's kMarkerSeparation: between the side cylinders' axes
 
 
 SCENARIOS = ('diagnosis', 'fault_tolerance')
@@ -134,9 +145,10 @@ def jittered_args(seed, jitter=True):
 
 
 def varied_args(seed):
-    """Start poses, lighting and camera noise of one varied run, a pure function of its
-    seed: poses by :func:`rason_campaign.poses.spread_poses` over VARIED_DISTANCE and
-    VARIED_FACING_AWAY (Helper in any heading), the rest uniform over its VARIED_ range.
+    """Start poses, lighting, camera noise and fault severity of one varied run, a pure
+    function of its seed: poses by :func:`rason_campaign.poses.spread_poses` over
+    VARIED_DISTANCE and VARIED_FACING_AWAY (Helper in any heading), the rest uniform over
+    its VARIED_ range (the severity matters only to an actuator fault).
 
     :rtype: dict of launch argument -> value
     """
@@ -145,6 +157,34 @@ def varied_args(seed):
     args['brightness'] = round(rng.uniform(*VARIED_BRIGHTNESS), 3)
     args['depth_noise'] = round(rng.uniform(*VARIED_DEPTH_NOISE), 3)
     args['depth_dropout'] = round(rng.uniform(*VARIED_DEPTH_DROPOUT), 4)
+    args['severity'] = round(rng.uniform(*VARIED_SEVERITY), 3)
+    return args
+
+
+def occluding_box(args):
+    """Where (box_x, box_y) the 'box' interaction puts its box for the start poses in
+    ``args``: BOX_IN_FRONT in front of Faulty's orange (right) cylinder on the line from
+    Helper's camera to it, so at the start it hides that cylinder from Helper.
+
+    :rtype: dict with box_x, box_y (m, rounded to mm)
+    """
+    yaw = args['faulty_yaw']
+    # the right cylinder: half the separation to the right of Faulty's heading
+    rx = args['faulty_x'] + MARKER_SEPARATION / 2.0 * math.sin(yaw)
+    ry = args['faulty_y'] - MARKER_SEPARATION / 2.0 * math.cos(yaw)
+    dx, dy = rx - args['helper_x'], ry - args['helper_y']
+    along = max(0.0, 1.0 - BOX_IN_FRONT / math.hypot(dx, dy))
+    return {'box_x': round(args['helper_x'] + along * dx, 3),
+            'box_y': round(args['helper_y'] + along * dy, 3)}
+
+
+def _scene_args(args, interaction, third_marker):
+    # what both scenarios add to a run's poses: the box and the third cylinder, left out
+    # when not asked for (so such plans are as before)
+    if interaction == 'box':
+        args.update(occluding_box(args))
+    if third_marker:
+        args['third_marker'] = 'true'
     return args
 
 
@@ -188,8 +228,7 @@ def make_plan(faults, runs, seed, interaction='none', rate=1.0, images=False, ji
             args.update({'fault': fault, 'seed': run_seed, 'rate': rate,
                          'interaction': interaction,
                          'images': 'true' if images else 'false'})
-            if third_marker:
-                args['third_marker'] = 'true'
+            _scene_args(args, interaction, third_marker)
             plan.append(RunSpec(number, fault, run_seed, args))
     return plan
 
@@ -218,8 +257,7 @@ def make_mission_plan(faults, runs, seed, fault_at=0.0, interaction='none', rate
             args = spread_poses(run_seed)
             args.update({'fault': fault, 'fault_at': fault_at, 'seed': run_seed, 'rate': rate,
                          'interaction': interaction, 'images': 'true' if images else 'false'})
-            if third_marker:
-                args['third_marker'] = 'true'
+            _scene_args(args, interaction, third_marker)
             plan += [RunSpec(number, fault, run_seed, dict(args), arm) for arm in ARMS]
     return plan
 
