@@ -155,6 +155,14 @@ def test_markdown_says_when_faulty_carries_the_third_cylinder():
     assert 'interaction fault: none; Faulty carries the third (blue) cylinder' in text
 
 
+def test_markdown_states_the_wall_time_when_the_campaign_measured_it():
+    assert 'Wall time' not in report.markdown(META, results(), {})  # e.g. an older plan.json
+    text = report.markdown(dict(META, wall=1919, jobs=3), results(), {})
+    assert 'Wall time: 1919 s (32.0 min) for the runs, 3 at a time (`--jobs 3`).' in text
+    text = report.markdown(dict(META, wall=600, jobs=1), results(), {})
+    assert 'Wall time: 600 s (10.0 min) for the runs, one at a time.' in text
+
+
 def test_markdown_has_the_confusion_matrix():
     lines = report.markdown(META, results(), {}).splitlines()
     assert '## Confusion matrix' in lines

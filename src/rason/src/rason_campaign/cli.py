@@ -217,11 +217,16 @@ def main(argv=None):
                       lambda _index, spec: progress_start(spec, len(specs)),
                       lambda spec, record: analyze(spec, record, bagread.read_events),
                       progress_end)
+    wall = time.monotonic() - t0
+    if not args.analyze_only:  # the report states how long the runs took (plan.json keeps it)
+        meta.update({'wall': round(wall), 'jobs': args.jobs})
+        with open(plan_path, 'w') as f:
+            json.dump({'meta': meta, 'runs': [s.to_dict() for s in specs]}, f, indent=1)
     write_report(args.out, meta, results)
     s = stats.summary(results)
     print('campaign: %d correct, %d undiagnosed, %d wrong of %d runs in %.0f s; report %s'
           % (s['counts']['correct'], s['counts']['undiagnosed'], s['counts']['wrong'],
-             s['runs'], time.monotonic() - t0, os.path.join(args.out, 'report.md')))
+             s['runs'], wall, os.path.join(args.out, 'report.md')))
     sys.exit(0 if s['counts']['wrong'] == 0 else 1)
 
 

@@ -95,6 +95,17 @@ def fault_table(fault, results, fault_summary):
     return table(header, rows)
 
 
+def wall_line(meta):
+    """The report's line on how long the runs took, when the campaign measured it (meta
+    'wall', 'jobs'), followed by an empty line; else nothing."""
+    if 'wall' not in meta:
+        return []
+    jobs = meta.get('jobs', 1)
+    return ['Wall time: %d s (%.1f min) for the runs, %s.' % (
+        meta['wall'], meta['wall'] / 60.0,
+        'one at a time' if jobs == 1 else '%d at a time (`--jobs %d`)' % (jobs, jobs)), '']
+
+
 # What the report says of Faulty's cylinders (meta 'third_marker').
 MARKERS = {False: '', True: '; Faulty carries the third (blue) cylinder behind the other two'}
 
@@ -115,6 +126,7 @@ def markdown(meta, results, figures):
              % (meta['date'], meta['runs'], meta['seed'], meta['rate'], meta['interaction'],
                 MARKERS[bool(meta.get('third_marker'))]),
              '',
+             ] + wall_line(meta) + [
              'Times are simulated seconds (the recorded /clock). Step boundaries come from the '
              'recorded messages: start = Faulty\'s first `move` action, help = Faulty\'s '
              '`helpme` broadcast, found = Helper\'s `found(...)` to Faulty, diagnosis = the '
