@@ -98,15 +98,16 @@ helpTimeout(120000).
     .drop_desire(tryMove);
     !conclude(undiagnosed, "no diagnosis within the help timeout").
 
-// IMPROVED: the helper watches the move that failed (its length in the failure's
-// code(move(D)) annotation), not the thesis's fixed move(0.3). A weaker actuator fault
-// (issue 18: severity below 1) drifts past bad_move's threshold only after a longer way,
-// about 0.28 (1 - s/2) / s m at severity s (0.8 m at 0.3); a shorter move would pass, and
-// the fault be taken for a false positive.
+// IMPROVED: for the helper to watch, the move that failed is made again as long (its
+// length in the failure's code(move(D)) annotation), not the thesis's fixed move(0.3). A
+// weaker actuator fault (issue 18: severity s below 1) drifts past bad_move's threshold
+// only after about 0.28 (1 - s/2) / s m (0.8 m at 0.3); a shorter move passes and the
+// fault is taken for a false positive. It is made backwards, over the way I came, which I
+// know is free: ahead may be a wall. An actuator fault turns me the same way backwards.
 +!noteFailedMove(Annotations) : .member(code(move(D)), Annotations) <- -+failedMove(D).
 +!noteFailedMove(_) <- true.
 
-+!repeatFailedMove : failedMove(D) <- move(D).
++!repeatFailedMove : failedMove(D) <- move(-D).
 +!repeatFailedMove <- move(0.3).
 
 //Plans to help diagnose
@@ -120,9 +121,17 @@ helpTimeout(120000).
     !conclude(none, "moved as planned while observed (false positive)").
 
 // FIX: the helper's plan is +!giveFeedback; the thesis sent givemeFeedback.
--!tryMove[source(R)]
+// IMPROVED: only a failure the diagnosis knows (no_progress, bad_move) is evidence; a move
+// stopped by something else (e.g. timeout against an obstacle) says nothing of the fault.
+-!tryMove[source(R) | Annotations]
+: .member(Reason, [no_progress, bad_move]) & .member(Reason, Annotations)
 <- .print(" requesting some feedback from ",R);
     .send(R,achieve,giveFeedback).
+
+-!tryMove[source(R) | Annotations]
+<- .print("The move for ", R, " failed otherwise: ", Annotations);
+    .send(R,achieve,thanks);
+    !conclude(undiagnosed, "the move watched by the helper failed without no_progress or bad_move").
 
 +found(Me)[source(R)]
 : .my_name(Me)
