@@ -4,7 +4,6 @@ import socket
 import sys
 import threading
 import time
-import xmlrpc.client
 from xmlrpc.server import SimpleXMLRPCServer
 
 import pytest
@@ -17,18 +16,6 @@ import os, sys
 from xmlrpc.server import SimpleXMLRPCServer
 server = SimpleXMLRPCServer(('127.0.0.1', int(sys.argv[1])), logRequests=False)
 server.register_function(lambda caller: [1, 'pid', os.getpid()], 'getPid')
-params = {'/run_id': 'abc', '/rosdistro': 'noetic'}
-def set_param(caller, key, value):
-    params[key] = value
-    return [1, 'set', 0]
-def delete_param(caller, key):
-    gone = [k for k in params if k == key or k.startswith(key + '/')]
-    for k in gone:
-        del params[k]
-    return [1 if gone else -1, 'deleted', 0]
-server.register_function(lambda caller: [1, 'names', sorted(params)], 'getParamNames')
-server.register_function(set_param, 'setParam')
-server.register_function(delete_param, 'deleteParam')
 try:
     server.serve_forever()
 except KeyboardInterrupt:
@@ -95,19 +82,6 @@ def test_a_master_that_ends_at_once_is_an_error_not_a_wait(tmp_path):
         master.start(timeout=20.0)
     assert time.monotonic() - t0 < 5.0
     assert not master.running
-
-
-def test_clearing_a_used_master_leaves_only_its_own_parameters(tmp_path):
-    port = runner.pick_port()
-    with runner.PrivateMaster(str(tmp_path / 'master.log'), port,
-                              command=[sys.executable, '-c', FAKE_MASTER, str(port)]) as master:
-        proxy = xmlrpc.client.ServerProxy(master.uri)
-        for name in ('/use_sim_time', '/rason_sim/lights', '/rason_sim/seed', '/a/b/c'):
-            proxy.setParam('/test', name, 1)
-        master.clear_params()
-        assert proxy.getParamNames('/test')[2] == ['/rosdistro', '/run_id']
-        master.clear_params()  # nothing to do: no error
-        assert proxy.getParamNames('/test')[2] == ['/rosdistro', '/run_id']
 
 
 def test_a_run_s_jvm_options_lead_and_the_shell_s_come_last(tmp_path):

@@ -90,25 +90,6 @@ def test_no_slots_is_an_error():
         run_in_slots([1], 0, lambda item, slot: item)
 
 
-class FakeMaster(object):
-    """runner.PrivateMaster's interface, started and stopped on the fake runner's books."""
-
-    def __init__(self, books, log, port):
-        self.books, self.log, self.port = books, log, port
-        self.uri = 'fake:%d' % port
-        self.running = False
-
-    def start(self):
-        self.running = True
-        self.books.started.append(self.port)
-        return self
-
-    def stop(self):
-        if self.running:
-            self.running = False
-            self.books.stopped.append(self.port)
-
-
 class FakeRunner(object):
     """runner's interface: run() records the master port each run was given."""
 
@@ -117,22 +98,8 @@ class FakeRunner(object):
         self.ports_in_use = set()
         self.clashes = 0
         self.ports = []
-        self.started, self.stopped = [], []
 
-    def PrivateMaster(self, log, port):
-        return FakeMaster(self, log, port)
-
-    @staticmethod
-    def pick_port(base):
-        return base
-
-    @staticmethod
-    def master_is_up(uri):
-        return True
-
-    def run(self, spec, bags, timeout, master):
-        assert master.running
-        port = master.port
+    def run(self, spec, bags, timeout, port):
         with self.lock:
             self.clashes += port in self.ports_in_use
             self.ports_in_use.add(port)
@@ -146,7 +113,7 @@ class FakeRunner(object):
         pass
 
 
-def test_campaign_runs_jobs_at_once_each_slot_on_a_master_of_its_own(capsys):
+def test_campaign_runs_jobs_at_once_on_port_ranges_of_their_own(capsys):
     from rason_campaign import cli
     args = cli.parse_args(['--out', 'o', '--jobs', '2', '--port', '12000'])
     fake = FakeRunner()
@@ -155,27 +122,8 @@ def test_campaign_runs_jobs_at_once_each_slot_on_a_master_of_its_own(capsys):
                           lambda spec, record: (spec, record), lambda result: 'done')
     assert results == [(s, 'record of %s' % s) for s in 'abcde']
     assert set(fake.ports) == {12000, 12100} and fake.clashes == 0
-    # one master a slot, kept for its runs, stopped at the end
-    assert sorted(fake.started) == [12000, 12100] and sorted(fake.stopped) == [12000, 12100]
     lines = sorted(capsys.readouterr().out.splitlines())
     assert lines == ['[%d] %s ... done' % (i, s) for i, s in enumerate('abcde', 1)]
-
-
-def test_a_slot_whose_master_died_gets_a_new_one(capsys):
-    from rason_campaign import cli
-    args = cli.parse_args(['--out', 'o', '--port', '12000'])
-    fake = FakeRunner()
-    run = fake.run
-
-    def run_then_kill(spec, bags, timeout, master):
-        record = run(spec, bags, timeout, master)
-        master.running = spec != 'b'  # the master dies during run b
-        return record
-    fake.run = run_then_kill
-    cli.run_all(args, ['a', 'b', 'c'], 'bags', fake, lambda index, spec: '',
-                lambda spec, record: record, lambda result: '')
-    assert fake.started == [12000, 12000]
-    assert fake.stopped == [12000]  # the live one; the dead one stops nothing
 
 
 def test_campaign_refuses_fewer_than_one_job(capsys):

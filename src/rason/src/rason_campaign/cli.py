@@ -237,37 +237,21 @@ def run_all(args, specs, bags, runner, start_line, analyze_run, end_line):
     :param start_line: (index from 1, spec) -> the text printed before the run
     :param analyze_run: (spec, record or None) -> the run's result
     :param end_line: result -> the text that ends the line"""
-    masters = {}  # slot -> its runner.PrivateMaster, used by its runs one after the other
-
-    def slot_master(slot):
-        master = masters.get(slot)
-        if master is None or not (master.running and runner.master_is_up(master.uri)):
-            if master is not None:  # it died: a new one
-                master.stop()
-            master = runner.PrivateMaster(os.path.join(bags, 'master_%d.log' % slot),
-                                          runner.pick_port(args.port + PORTS_PER_SLOT * slot))
-            masters[slot] = master.start()
-        return master
-
     def run_one(numbered, slot):
         _index, spec = numbered
         if args.analyze_only:
             path = os.path.join(bags, spec.name + '.run.json')
             record = runner.RunRecord.load(path) if os.path.exists(path) else None
         else:
-            record = runner.run(spec, bags, args.timeout, master=slot_master(slot))
+            record = runner.run(spec, bags, args.timeout, args.port + PORTS_PER_SLOT * slot)
         return analyze_run(spec, record)
 
     def print_line(_position, numbered, result):
         print(start_line(*numbered) + end_line(result), flush=True)
 
     jobs = 1 if args.analyze_only else args.jobs
-    try:
-        return slots.run_in_slots(list(enumerate(specs, 1)), jobs, run_one, print_line,
-                                  runner.stop_all)
-    finally:
-        for master in masters.values():
-            master.stop()
+    return slots.run_in_slots(list(enumerate(specs, 1)), jobs, run_one, print_line,
+                              runner.stop_all)
 
 
 def run_missions(args, meta, specs, bags, runner, bagread):

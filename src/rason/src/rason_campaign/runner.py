@@ -122,27 +122,10 @@ class PrivateMaster(object):
         self.log = log
         self._command = list(command) if command else ['roscore', '-p', str(self.port)]
         self._proc = None
-        self._own_params = set()
 
     def env(self, base=None):
         """``base`` (default os.environ) with ROS_MASTER_URI set to this master."""
         return dict(os.environ if base is None else base, ROS_MASTER_URI=self.uri)
-
-    def _proxy(self, timeout=5.0):
-        return xmlrpc.client.ServerProxy(self.uri, transport=_Transport(timeout))
-
-    def _param_names(self):
-        code, msg, names = self._proxy().getParamNames(_CALLER)
-        if code != 1:
-            raise RuntimeError('master on port %d: getParamNames: %s' % (self.port, msg))
-        return set(names)
-
-    def clear_params(self):
-        """Deletes every parameter set since the master started (roscore's own, such as
-        /run_id, stay), so a run on a master used before sees only its own launch's: a
-        parameter its launch sets only sometimes (e.g. ``lights``) is not left over."""
-        for name in sorted(self._param_names() - self._own_params):
-            self._proxy().deleteParam(_CALLER, name)  # fails harmlessly if its parent went
 
     def start(self, timeout=20.0):
         """Start it and wait until it answers.
@@ -161,7 +144,6 @@ class PrivateMaster(object):
                 self.stop()
                 raise RuntimeError('roscore on port %d did not start (see %s)' % (self.port, self.log))
             time.sleep(0.1)
-        self._own_params = self._param_names()
         return self
 
     def stop(self, grace=15.0):
@@ -257,13 +239,15 @@ def launch_env(master, base=None):
     return env
 
 
-def run(spec, bag_dir, timeout, base_port=11611, master=None):
-    """Run ``spec`` to its end or ``timeout`` wall seconds; the bag and the launch's log go
-    to ``bag_dir/<spec.name>.bag|.log``, the record to ``.run.json``.
+def run(spec, bag_dir, timeout, base_port=11611):
+    """Run ``spec`` to its end or ``timeout`` wall seconds, on a roscore of its own (first
+    free port from ``base_port``); the bag and the launch's log go to
+    ``bag_dir/<spec.name>.bag|.log``, the record to ``.run.json``.
 
-    :param master: a running :class:`PrivateMaster` to use (the campaign keeps one per
-        slot), its parameters cleared first; without it, a roscore of the run's own on the
-        first free port from ``base_port`` (about 1.5 s of wall and 1.3 s of CPU more)
+    A master is not kept for several runs: it would try to shut down the nodes of the run
+    before, by their old addresses, when this run's nodes register with the same names, and
+    an address a node of this run got since then made that node stop (a campaign saw it).
+
     :rtype: RunRecord
     """
     bag_dir = os.path.abspath(bag_dir)  # roslaunch runs the recorder in ROS_HOME
@@ -275,12 +259,8 @@ def run(spec, bag_dir, timeout, base_port=11611, master=None):
     cmd = ['roslaunch'] + list(spec.launch) + launch_arguments(spec, bag)
     with open(log, 'w') as out:
         out.write(' '.join(cmd) + '\n')
-    if master is None:
-        # roslaunch uses the master ROS_MASTER_URI names when one answers there
-        with PrivateMaster(log, pick_port(base_port)) as own:
-            timed_out, returncode, wall = _launch(cmd, own, log, timeout)
-    else:
-        master.clear_params()
+    # roslaunch uses the master ROS_MASTER_URI names when one answers there
+    with PrivateMaster(log, pick_port(base_port)) as master:
         timed_out, returncode, wall = _launch(cmd, master, log, timeout)
     record = RunRecord(None if timed_out else returncode, wall, timed_out, bag, log)
     _recover_bag(bag)
