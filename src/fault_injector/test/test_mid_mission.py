@@ -32,6 +32,23 @@ def test_the_fault_is_due_once_at_its_time():
     assert pending.due(9.0) is None
 
 
+def test_the_clock_step_the_fault_is_due_at_counts_even_with_float_rounding():
+    # CI: started at 3.31 s, fault_at 2: the timer woke at the clock's 5.31, which is less
+    # than 3.31 + 2.0 in floats; the fault was never injected
+    pending = faults.MidMissionFault('left_actuator', 2.0)
+    assert pending.on_command(*FORWARD, now=3.31) == 3.31 + 2.0
+    assert 5.31 < 3.31 + 2.0
+    assert pending.due(5.30) is None
+    assert pending.waiting(5.30) == pytest.approx(0.01)
+    assert pending.waiting(5.31) is None
+    assert pending.due(5.31) == faults.LEFT_ACTUATOR
+    assert pending.waiting(5.31) is None and pending.waiting(4.0) is None  # injected
+
+
+def test_nothing_to_wait_for_before_the_mission():
+    assert faults.MidMissionFault('odometry', 2.0).waiting(1.0) is None
+
+
 @pytest.mark.parametrize('fault, delay, error', [
     ('none', 1.0, faults.UnknownFaultError),
     ('cancel', 1.0, faults.UnknownFaultError),

@@ -260,6 +260,9 @@ def is_motion_command(linear, angular):
     return any(v != 0.0 and not math.isnan(v) for v in tuple(linear) + tuple(angular))
 
 
+_TIME_EPSILON = 1e-6  # s: far below any clock step
+
+
 class MidMissionFault(object):
     """A fault injected some time after the mission starts (``fault_at``), rather than at
     start-up: the mission starts with the first command that moves the robot.
@@ -294,8 +297,18 @@ class MidMissionFault(object):
         return self.started + self.delay
 
     def due(self, now):
-        """The fault to inject now, once (None before its time and after)."""
-        if self.injected or self.started is None or now < self.started + self.delay:
+        """The fault to inject now, once (None before its time and after). A clock in float
+        seconds read at the very step the fault is due may come out a hair short of
+        started + delay (3.31 + 2.0 is 5.3100000000000005): that counts as due."""
+        if self.injected or self.started is None or now + _TIME_EPSILON < self.started + self.delay:
             return None
         self.injected = True
         return self.fault
+
+    def waiting(self, now):
+        """Seconds until the fault is due (> 0), or None when there is nothing to wait for
+        (no mission yet, due now, or injected)."""
+        if self.injected or self.started is None:
+            return None
+        left = self.started + self.delay - now
+        return left if left > _TIME_EPSILON else None

@@ -168,8 +168,12 @@ class FaultInjectorNode(object):
 
     def _inject_mid_mission(self, _event):
         with self._lock:
-            fault = self._mid_mission.due(rospy.get_time())
+            now = rospy.get_time()
+            fault = self._mid_mission.due(now)
             message = self._state.request(fault)[1] if fault is not None else None
+            early = self._mid_mission.waiting(now)
+        if early is not None:  # the timer woke before the fault's time: wait the rest
+            rospy.Timer(rospy.Duration(early), self._inject_mid_mission, oneshot=True)
         if message is not None:
             rospy.loginfo('fault_injector: mid-mission: %s', message)
             self._publish_status()
