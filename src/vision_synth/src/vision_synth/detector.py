@@ -347,42 +347,24 @@ class Detector(object):
                               len(points)))
         return found
 
-    def pair(self, marker, blobs):
-        """The best (left, right, separation) pair for ``marker``, or None.
-
-        :param blobs: dict colour -> list of :class:`Blob`
-        """
-        best, best_error = None, None
-        for left in blobs.get(marker.left, ()):
-            for right in blobs.get(marker.right, ()):
-                d = float(np.linalg.norm(right.axis - left.axis))
-                if not self.pair_min <= d <= self.pair_max:
-                    continue
-                error = abs(d - self.pair_nominal)
-                if best is None or error < best_error:
-                    best, best_error = (left, right, d), error
-        return best
-
     def _distance_error(self, role_a, blob_a, role_b, blob_b):
         """|seen − nominal| distance of two cylinders, or None outside the tolerance
         (``pair_min``/``pair_max`` about ``pair_nominal``, moved to the pair's nominal)."""
         nominal = math.dist(self._layout[role_a], self._layout[role_b])
+        shift = nominal - self.pair_nominal  # exactly 0 for left/right: the thesis's bounds
         d = float(np.linalg.norm(blob_b.axis - blob_a.axis))
-        if not (nominal + self.pair_min - self.pair_nominal <= d
-                <= nominal + self.pair_max - self.pair_nominal):
+        if not self.pair_min + shift <= d <= self.pair_max + shift:
             return None
         return abs(d - nominal)
 
     def match(self, marker, blobs):
         """The cylinders of ``marker`` seen in the frame: dict role -> :class:`Blob` of
         the best consistent triple (every distance within tolerance, least summed error),
-        else of the best pair; None when no two fit.
+        else of the best pair; None when no two fit. For a robot with two cylinders this is
+        the thesis's pair: within ``pair_min``..``pair_max``, the closest to ``pair_nominal``.
 
         :param blobs: dict colour -> list of :class:`Blob`
         """
-        if marker.back is None:
-            best = self.pair(marker, blobs)
-            return None if best is None else {'left': best[0], 'right': best[1]}
         roles = marker.roles
         best, best_key = None, None
         for size in (3, 2):
