@@ -208,8 +208,7 @@ def main(argv=None):
         if args.scenario != 'diagnosis':  # a diagnosis plan.json stays what it was
             del meta['jitter']            # the poses are spread by poses.spread_poses
             meta.update({'scenario': args.scenario, 'fault_at': args.fault_at})
-        with open(plan_path, 'w') as f:
-            json.dump({'meta': meta, 'runs': [s.to_dict() for s in specs]}, f, indent=1)
+        _write_plan(plan_path, meta, specs)
     if meta.get('scenario', 'diagnosis') == 'fault_tolerance':
         sys.exit(run_missions(args, meta, specs, bags, runner, bagread))
     t0 = time.monotonic()
@@ -220,14 +219,19 @@ def main(argv=None):
     wall = time.monotonic() - t0
     if not args.analyze_only:  # the report states how long the runs took (plan.json keeps it)
         meta.update({'wall': round(wall), 'jobs': args.jobs})
-        with open(plan_path, 'w') as f:
-            json.dump({'meta': meta, 'runs': [s.to_dict() for s in specs]}, f, indent=1)
+        _write_plan(plan_path, meta, specs)
     write_report(args.out, meta, results)
     s = stats.summary(results)
     print('campaign: %d correct, %d undiagnosed, %d wrong of %d runs in %.0f s; report %s'
           % (s['counts']['correct'], s['counts']['undiagnosed'], s['counts']['wrong'],
              s['runs'], wall, os.path.join(args.out, 'report.md')))
     sys.exit(0 if s['counts']['wrong'] == 0 else 1)
+
+
+def _write_plan(path, meta, specs):
+    """plan.json: the campaign's meta and its runs (what --analyze-only reads back)."""
+    with open(path, 'w') as f:
+        json.dump({'meta': meta, 'runs': [s.to_dict() for s in specs]}, f, indent=1)
 
 
 def run_all(args, specs, bags, runner, start_line, analyze_run, end_line):
