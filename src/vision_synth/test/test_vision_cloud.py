@@ -155,6 +155,29 @@ def test_depth_to_points_inverts_the_projection():
     np.testing.assert_allclose(points[10:], xyz[10:], rtol=1e-5, atol=1e-6)
 
 
+def test_depth_points_windows_are_the_whole_arrays_windows():
+    scene = vs.Scene((10, 2.0, 30))
+    _, xyz = scene.render()
+    depth = xyz[..., 2].copy()
+    depth[5:40, 100:300] = 0.0  # no return
+    whole = cloud.depth_to_points(depth, vs.Intrinsics())
+    lazy = cloud.DepthPoints(depth, vs.Intrinsics())
+    assert lazy.shape == whole.shape and lazy.dtype == whole.dtype
+    for rows, cols in [(slice(0, 480), slice(0, 640)), (slice(200, 260), slice(300, 333)),
+                       (slice(0, 50), slice(90, 310)), (slice(470, 500), slice(630, None))]:
+        np.testing.assert_array_equal(lazy[rows, cols], whole[rows, cols])
+    np.testing.assert_array_equal(np.asarray(lazy), whole)
+    np.testing.assert_array_equal(lazy[3, 4], whole[3, 4])  # any other index: the whole array's
+
+
+def test_rgb8_image_is_read_without_a_copy():
+    pixels = np.random.default_rng(2).integers(0, 256, (4, 5, 3), dtype=np.uint8)
+    msg = Image(height=4, width=5, encoding='rgb8', step=15, data=pixels.tobytes())
+    rgb = cloud.image_to_rgb(msg)
+    np.testing.assert_array_equal(rgb, pixels)
+    assert not rgb.flags.writeable  # a view of the message's bytes
+
+
 def test_depth_image_in_millimetres_and_metres_reads_as_metres_with_nan_for_no_return():
     mm = np.array([[0, 1000, 2501], [65535, 450, 0]], dtype='<u2')
     msg = Image(height=2, width=3, encoding='16UC1', step=6, data=mm.tobytes())

@@ -256,6 +256,41 @@ def test_closing_fills_holes_in_a_cylinder():
     assert np.array_equal(d.masks(holed)['green'], before)
 
 
+def test_opening_and_closing_around_the_pixels_equal_the_whole_frames():
+    import cv2
+    rng = np.random.default_rng(3)
+    for kernel in (2, 3, 5):
+        d = det.Detector(kernel_size=kernel)
+        for _ in range(20):
+            mask = np.zeros((120, 160), np.uint8)
+            for _ in range(rng.integers(1, 4)):  # a few blobs with holes and specks, some at the edge
+                y, x = rng.integers(0, 120), rng.integers(0, 160)
+                mask[y:y + rng.integers(1, 30), x:x + rng.integers(1, 30)] = 255
+            specks = rng.random(mask.shape) < 0.01
+            mask[specks] = 255 - mask[specks]
+            whole = cv2.morphologyEx(mask, cv2.MORPH_OPEN, np.ones((kernel, kernel), np.uint8))
+            whole = cv2.morphologyEx(whole, cv2.MORPH_CLOSE, np.ones((kernel, kernel), np.uint8))
+            d._open_close(mask)
+            np.testing.assert_array_equal(mask, whole)
+
+
+def test_blobs_are_where_they_are_in_the_frame_and_depth_points_give_the_same_blobs():
+    from vision_synth import cloud
+    scene = vs.Scene((-15, 1.5, 40))
+    rgb, xyz = scene.render()
+    d = det.Detector()
+    mask = d.masks(rgb)['orange']
+    ys, xs = np.nonzero(mask)
+    (blob,) = d.blobs(mask, xyz, 'orange')
+    assert (blob.u, blob.v, blob.area) == (pytest.approx(xs.mean()), pytest.approx(ys.mean()), len(xs))
+    lazy = cloud.DepthPoints(xyz[..., 2], vs.Intrinsics())
+    (same,) = d.blobs(mask, lazy, 'orange')
+    np.testing.assert_allclose(same.surface, blob.surface, atol=1e-6)
+    whole = cloud.depth_to_points(xyz[..., 2], vs.Intrinsics())
+    assert repr(d.detect(rgb, lazy)) == repr(d.detect(rgb, whole))
+    assert d.blobs(np.zeros_like(mask), xyz) == []
+
+
 def test_bgr_input():
     scene = vs.Scene((-10, 2.0, 30))
     rgb, xyz = scene.render()

@@ -124,7 +124,8 @@ def arrays_to_cloud(xyz, rgb=None, frame_id='camera_rgb_optical_frame', stamp=No
 
 
 def image_to_rgb(msg):
-    """sensor_msgs/Image (rgb8, bgr8, rgba8, bgra8) -> (H, W, 3) uint8 RGB.
+    """sensor_msgs/Image (rgb8, bgr8, rgba8, bgra8) -> (H, W, 3) uint8 RGB (for rgb8 a
+    view of the message's data, read-only when the data is bytes).
 
     :raises CloudError: empty image, unknown encoding, data too short
     """
@@ -143,6 +144,8 @@ def image_to_rgb(msg):
     if isinstance(data, list):
         data = bytes(data)
     view = np.ndarray((h, w, channels), np.uint8, buffer=data, strides=(msg.step, channels, 1))
+    if order == (0, 1, 2) and channels == 3:
+        return view  # rgb8 as it came: a (read-only) view, no copy of ~1 MB per frame
     return np.ascontiguousarray(view[..., list(order)])
 
 
@@ -186,9 +189,47 @@ def depth_to_points(depth, intrinsics):
     :param depth: (H, W) float
     :param intrinsics: object with fx, fy, cx, cy
     """
-    z = np.asarray(depth, np.float32).copy()
-    z[~(z > 0)] = np.nan
+    return _project(np.asarray(depth, np.float32), intrinsics, 0, 0)
+
+
+def _project(z, intrinsics, row0, col0):
+    """Points of the depth window ``z`` whose top-left pixel is (row0, col0)."""
+    z = np.where(z > 0, z, np.float32(np.nan))
     h, w = z.shape
-    u = (np.arange(w, dtype=np.float32) - intrinsics.cx) / intrinsics.fx
-    v = (np.arange(h, dtype=np.float32) - intrinsics.cy) / intrinsics.fy
+    u = (np.arange(col0, col0 + w, dtype=np.float32) - intrinsics.cx) / intrinsics.fx
+    v = (np.arange(row0, row0 + h, dtype=np.float32) - intrinsics.cy) / intrinsics.fy
     return np.stack([z * u[None, :], z * v[:, None], z], axis=-1)
+
+
+class DepthPoints(object):
+    """The organized points of a depth image, computed only for the windows asked for.
+
+    Stands for ``depth_to_points(depth, intrinsics)`` where a detector reads points only
+    inside its blobs' bounding boxes: ``points[r0:r1, c0:c1]`` is that array's window (the
+    same values), the whole array is built only by ``np.asarray(points)``. Saves building
+    ~3.7 MB of points per 640×480 frame.
+
+    :param depth: (H, W) float metres, NaN or 0 = no return
+    :param intrinsics: object with fx, fy, cx, cy
+    """
+
+    ndim = 3
+    dtype = np.dtype(np.float32)
+
+    def __init__(self, depth, intrinsics):
+        self._depth = np.asarray(depth, np.float32)
+        if self._depth.ndim != 2:
+            raise CloudError('depth must be (H, W), got shape %s' % (self._depth.shape,))
+        self._intrinsics = intrinsics
+        self.shape = self._depth.shape + (3,)
+
+    def __getitem__(self, key):
+        if (isinstance(key, tuple) and len(key) == 2
+                and all(isinstance(k, slice) and k.step in (None, 1) for k in key)):
+            rows, cols = (range(*k.indices(n)) for k, n in zip(key, self._depth.shape))
+            return _project(self._depth[key], self._intrinsics, rows.start, cols.start)
+        return np.asarray(self)[key]
+
+    def __array__(self, dtype=None):
+        points = depth_to_points(self._depth, self._intrinsics)
+        return points if dtype is None else points.astype(dtype)

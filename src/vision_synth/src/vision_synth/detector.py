@@ -241,7 +241,9 @@ def check_frame(image, xyz):
 
     :returns: (H, W)
     """
-    if not isinstance(image, np.ndarray) or not isinstance(xyz, np.ndarray):
+    # points: a numpy array, or what stands for one (cloud.DepthPoints: shape, dtype and
+    # windows by slicing)
+    if not isinstance(image, np.ndarray) or not all(hasattr(xyz, a) for a in ('shape', 'dtype', 'ndim')):
         raise FrameError('image and points must be numpy arrays')
     if image.ndim != 3 or image.shape[2] != 3 or image.dtype != np.uint8:
         raise FrameError('image must be (H, W, 3) uint8, got %s %s' % (image.shape, image.dtype))
@@ -317,10 +319,22 @@ class Detector(object):
         for name in self._used:
             mask = self.colors[name].mask(hsv)
             if self.kernel_size > 1:
-                mask = cv2.morphologyEx(mask, cv2.MORPH_OPEN, self._kernel)
-                mask = cv2.morphologyEx(mask, cv2.MORPH_CLOSE, self._kernel)
+                self._open_close(mask)
             out[name] = mask
         return out
+
+    def _open_close(self, mask):
+        """Opening then closing of ``mask``, in place, only around its pixels: the bounding
+        box of its non-zero pixels padded by twice the kernel, outside which the mask is
+        and stays empty, so the result is the whole frame's (a few cylinders in 640×480)."""
+        x, y, w, h = cv2.boundingRect(mask)
+        if w == 0:
+            return
+        pad = 2 * self.kernel_size
+        rows = slice(max(y - pad, 0), y + h + pad)
+        cols = slice(max(x - pad, 0), x + w + pad)
+        window = cv2.morphologyEx(mask[rows, cols], cv2.MORPH_OPEN, self._kernel)
+        mask[rows, cols] = cv2.morphologyEx(window, cv2.MORPH_CLOSE, self._kernel)
 
     def blobs(self, mask, xyz, color=''):
         """Blobs of one cleaned mask with their 3-D positions; small or depth-less ones dropped.
@@ -329,22 +343,29 @@ class Detector(object):
         :param xyz: (H, W, 3) float, NaN where there is no depth
         :rtype: list of :class:`Blob`
         """
-        n, labels, stats, centroids = cv2.connectedComponentsWithStats(mask, connectivity=8)
+        # components of the bounding box of the mask's pixels (all of them, a fraction of
+        # the frame), their boxes and centroids then moved back to the frame's pixels
+        bx, by, bw, bh = cv2.boundingRect(mask)
+        if bw == 0:
+            return []
+        n, labels, stats, centroids = cv2.connectedComponentsWithStats(
+            mask[by:by + bh, bx:bx + bw], connectivity=8)
         found = []
         for i in range(1, n):
             x0, y0, w, h, area = (int(s) for s in stats[i])
             if area < self.min_blob_area:
                 continue
             inside = labels[y0:y0 + h, x0:x0 + w] == i
+            x0, y0 = x0 + bx, y0 + by
             points = np.asarray(xyz[y0:y0 + h, x0:x0 + w][inside], dtype=np.float64)
             points = points[np.isfinite(points).all(axis=1)]
             points = points[points[:, 2] > 0.0]
             if len(points) < self.min_valid_points:
                 continue
             surface = np.median(points, axis=0)
-            found.append(Blob(color, area, float(centroids[i][0]), float(centroids[i][1]),
-                              surface, geometry.axis_point(surface, self.cylinder_radius),
-                              len(points)))
+            u, v = float(centroids[i][0]) + bx, float(centroids[i][1]) + by
+            found.append(Blob(color, area, u, v, surface,
+                              geometry.axis_point(surface, self.cylinder_radius), len(points)))
         return found
 
     def _distance_error(self, role_a, blob_a, role_b, blob_b):

@@ -182,7 +182,7 @@ class VisionSynthNode(object):
                 intrinsics = self._intrinsics
             if intrinsics is None:
                 raise ValueError('no camera_info received yet (the depth image needs it)')
-            points = cloud.depth_to_points(cloud.depth_image_to_metres(depth), intrinsics)
+            points = cloud.DepthPoints(cloud.depth_image_to_metres(depth), intrinsics)
             if points.shape[:2] != rgb.shape[:2]:
                 raise ValueError('depth image %dx%d and image %dx%d differ' % (
                     points.shape[1], points.shape[0], rgb.shape[1], rgb.shape[0]))
