@@ -17,7 +17,7 @@ APT_PACKAGES := catkin ros-message-generation ros-message-runtime libstd-msgs-de
   ros-diagnostic-msgs libsensor-msgs-dev libnav-msgs-dev libdiagnostic-msgs-dev \
   python3-jpype default-jdk-headless maven build-essential cmake \
   libroscpp-dev libgeometry-msgs-dev libros-rosgraph-msgs-dev libtf2-msgs-dev \
-  libmujoco-dev libqhull-dev libosmesa6-dev python3-matplotlib python3-psutil \
+  libmujoco-dev libqhull-dev libosmesa6-dev libgtest-dev python3-matplotlib python3-psutil \
   python3-actionlib python3-actionlib-msgs ros-actionlib-msgs python3-std-srvs ros-std-srvs \
   python3-move-base-msgs ros-move-base-msgs \
   python3-selenium chromium chromium-driver python3-visualization-msgs ros-visualization-msgs python3-yaml

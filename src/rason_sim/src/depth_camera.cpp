@@ -27,16 +27,62 @@ double kinectSigma(double z) {
   return 0.0012 + 0.0019 * (z - 0.4) * (z - 0.4);
 }
 
+namespace {
+
+// Inverse of the standard normal CDF at p (0 < p < 1), by bisection: exact enough for a
+// table built once.
+double inverseNormalCdf(double p) {
+  double lo = -9.0, hi = 9.0;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (0.5 * std::erfc(-mid / std::sqrt(2.0)) < p ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+constexpr int kGaussBits = 16;
+
+const std::vector<float>& gaussTable() {
+  static const std::vector<float> table = [] {
+    const int n = 1 << kGaussBits;
+    std::vector<float> t(n);
+    for (int i = 0; i < n / 2; ++i) {  // symmetric: the lower half mirrored
+      t[i] = static_cast<float>(inverseNormalCdf((i + 0.5) / n));
+      t[n - 1 - i] = -t[i];
+    }
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace
+
+void PixelNoise::reseed(uint64_t seed) {
+  // splitmix64 of the seed: a well-mixed state, never 0 (xorshift's one fixed point)
+  uint64_t z = seed + 0x9E3779B97F4A7C15ULL;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  state_ = (z ^ (z >> 31)) | 1ULL;
+  gauss_table_ = gaussTable().data();  // built now, not in the first frame
+}
+
+void PixelNoise::draw(float& gauss, float& uniform) {
+  state_ ^= state_ >> 12;
+  state_ ^= state_ << 25;
+  state_ ^= state_ >> 27;
+  const uint64_t r = state_ * 0x2545F4914F6CDD1DULL;
+  gauss = gauss_table_[r >> (64 - kGaussBits)];
+  uniform = static_cast<float>(r & 0xFFFFFFULL) * (1.0f / 16777216.0f);  // 24 other bits
+}
+
 void buildFrame(const Intrinsics& k, const uint8_t* rgb_bottom_up, const float* depth_bottom_up,
-                double near, double far, const DepthNoise& noise, std::mt19937& rng,
+                double near, double far, const DepthNoise& noise, PixelNoise& rng,
                 std::vector<uint8_t>& image, std::vector<uint16_t>& depth_mm,
                 std::vector<uint8_t>* cloud) {
   const int w = k.width, h = k.height;
   image.resize(static_cast<size_t>(w) * h * 3);
   depth_mm.resize(static_cast<size_t>(w) * h);
   if (cloud) cloud->resize(static_cast<size_t>(w) * h * kPointStep);
-  std::normal_distribution<float> gauss(0.0f, 1.0f);
-  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
   const float nan = std::numeric_limits<float>::quiet_NaN();
   for (int row = 0; row < h; ++row) {
     const int src_row = h - 1 - row;  // OpenGL rows start at the bottom
@@ -48,9 +94,11 @@ void buildFrame(const Intrinsics& k, const uint8_t* rgb_bottom_up, const float* 
     for (int col = 0; col < w; ++col) {
       float z = linearDepth(src_depth[col], near, far);
       if (!std::isnan(z)) {
-        if (noise.scale > 0.0) z += static_cast<float>(noise.scale * kinectSigma(z)) * gauss(rng);
+        float gauss, uniform;
+        rng.draw(gauss, uniform);
+        if (noise.scale > 0.0) z += static_cast<float>(noise.scale * kinectSigma(z)) * gauss;
         if (z < noise.min_range || z > noise.max_range) z = nan;
-        if (noise.dropout > 0.0 && uniform(rng) < noise.dropout) z = nan;
+        if (noise.dropout > 0.0 && uniform < noise.dropout) z = nan;
       }
       // max_range (8 m) is far below 65.535 m: the rounded millimetres fit
       out_mm[col] = std::isnan(z) ? 0 : static_cast<uint16_t>(std::lround(z * 1000.0f));

@@ -244,7 +244,7 @@ class Simulator {
     pnh.param("frame_ack_timeout", frame_ack_timeout_, 2.0);
     int seed = 1;
     pnh.param("seed", seed, 1);
-    rng_.seed(static_cast<unsigned>(seed));
+    rng_.reseed(static_cast<uint64_t>(seed));
     XmlRpc::XmlRpcValue camera = structParam(pnh, "camera");
     noise_.scale = field(camera, "depth_noise", 1.0, "~camera");
     noise_.dropout = field(camera, "depth_dropout", 0.0, "~camera");
@@ -663,7 +663,7 @@ class Simulator {
   std::string frame_ack_topic_;
   double frame_ack_timeout_ = 2.0;
   DepthNoise noise_;
-  std::mt19937 rng_;
+  PixelNoise rng_;
   mjModel* model_ = nullptr;
   mjData* data_ = nullptr;
   std::unique_ptr<OffscreenRenderer> renderer_;
