@@ -58,6 +58,7 @@ def test_launch_arguments_record_to_the_bag():
     assert 'record:=true' in args and 'bag:=/tmp/x.bag' in args
     assert 'fault:=both_actuators' in args and 'rate:=2.0' in args and 'seed:=1001' in args
     assert 'occlude:=true' not in args
+    assert 'dialogue:=false' in args  # the bag holds what it would print
 
 
 def test_spec_round_trips_through_dict():

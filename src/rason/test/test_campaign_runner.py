@@ -84,9 +84,10 @@ def test_a_master_that_ends_at_once_is_an_error_not_a_wait(tmp_path):
     assert not master.running
 
 
-def test_a_run_s_jvm_options_lead_and_the_shell_s_come_last(tmp_path):
-    master = runner.PrivateMaster(str(tmp_path / 'master.log'), 11999)
-    env = runner.launch_env(master, {'RASON_JVM_OPTIONS': '-XX:TieredStopAtLevel=4'})
-    assert env['ROS_MASTER_URI'] == 'http://127.0.0.1:11999'
+def test_a_run_s_jvm_options_lead_and_the_shell_s_come_last():
+    uri = 'http://127.0.0.1:11999'
+    env = runner.launch_env(uri, {'RASON_JVM_OPTIONS': '-XX:TieredStopAtLevel=4',
+                                  'ROS_MASTER_URI': 'http://elsewhere:11311'})
+    assert env['ROS_MASTER_URI'] == uri
     assert env['RASON_JVM_OPTIONS'].split() == runner.RUN_JVM_OPTIONS.split() + ['-XX:TieredStopAtLevel=4']
-    assert runner.launch_env(master, {})['RASON_JVM_OPTIONS'] == runner.RUN_JVM_OPTIONS
+    assert runner.launch_env(uri, {})['RASON_JVM_OPTIONS'] == runner.RUN_JVM_OPTIONS

@@ -267,5 +267,6 @@ def launch_arguments(spec, bag):
 
     :rtype: list of str
     """
-    args = dict(spec.args, record='true', bag=bag)
+    # no dialogue node: the bag holds the messages it would print (saves ~0.4 s CPU a run)
+    args = dict(spec.args, record='true', bag=bag, dialogue='false')
     return ['%s:=%s' % (k, args[k]) for k in sorted(args)]

@@ -1,6 +1,6 @@
 """Running one campaign run: ``roslaunch rason faulty_helper.launch`` (or the launch file of
-the run's arm, ``RunSpec.launch``) on a master of its own, with a wall-clock timeout after
-which the whole launch is stopped.
+the run's arm, ``RunSpec.launch``) on a master of its own that the launch starts, with a
+wall-clock timeout after which the whole launch is stopped.
 
 :class:`PrivateMaster` (a ``roscore`` on a free port, stopped by its PID) is also what
 ``rason_bench`` starts its benchmarks on."""
@@ -231,22 +231,25 @@ def stop_all():
 RUN_JVM_OPTIONS = '-XX:TieredStopAtLevel=1 -XX:-UseG1GC -XX:+UseSerialGC'
 
 
-def launch_env(master, base=None):
-    """The environment of a run's roslaunch: ``master``'s, RASON_JVM_OPTIONS led by
-    :data:`RUN_JVM_OPTIONS`."""
-    env = master.env(base)
+def launch_env(master_uri, base=None):
+    """The environment of a run's roslaunch: ``base`` (default os.environ) with
+    ROS_MASTER_URI ``master_uri`` and RASON_JVM_OPTIONS led by :data:`RUN_JVM_OPTIONS`."""
+    env = dict(os.environ if base is None else base, ROS_MASTER_URI=master_uri)
     env['RASON_JVM_OPTIONS'] = (RUN_JVM_OPTIONS + ' ' + env.get('RASON_JVM_OPTIONS', '')).strip()
     return env
 
 
 def run(spec, bag_dir, timeout, base_port=11611):
-    """Run ``spec`` to its end or ``timeout`` wall seconds, on a roscore of its own (first
+    """Run ``spec`` to its end or ``timeout`` wall seconds, on a master of its own (first
     free port from ``base_port``); the bag and the launch's log go to
     ``bag_dir/<spec.name>.bag|.log``, the record to ``.run.json``.
 
-    A master is not kept for several runs: it would try to shut down the nodes of the run
-    before, by their old addresses, when this run's nodes register with the same names, and
-    an address a node of this run got since then made that node stop (a campaign saw it).
+    roslaunch starts that master and rosout itself (no master answers on the port it is
+    given) and stops them when the launch ends: a Python process less per run than a
+    ``roscore`` beside it. A master is not kept for several runs: it would try to shut down
+    the nodes of the run before, by their old addresses, when this run's nodes register
+    with the same names, and an address a node of this run got since then made that node
+    stop (a campaign saw it).
 
     :rtype: RunRecord
     """
@@ -256,26 +259,25 @@ def run(spec, bag_dir, timeout, base_port=11611):
     for stale in (bag, bag + '.active'):
         if os.path.exists(stale):
             os.remove(stale)
-    cmd = ['roslaunch'] + list(spec.launch) + launch_arguments(spec, bag)
+    port = pick_port(base_port)  # free: no master of another run answers there
+    cmd = ['roslaunch', '--port', str(port)] + list(spec.launch) + launch_arguments(spec, bag)
     with open(log, 'w') as out:
         out.write(' '.join(cmd) + '\n')
-    # roslaunch uses the master ROS_MASTER_URI names when one answers there
-    with PrivateMaster(log, pick_port(base_port)) as master:
-        timed_out, returncode, wall = _launch(cmd, master, log, timeout)
+    timed_out, returncode, wall = _launch(cmd, 'http://127.0.0.1:%d' % port, log, timeout)
     record = RunRecord(None if timed_out else returncode, wall, timed_out, bag, log)
     _recover_bag(bag)
     record.save(os.path.join(bag_dir, spec.name + '.run.json'))
     return record
 
 
-def _launch(cmd, master, log, timeout):
-    """roslaunch ``cmd`` on ``master`` until it ends or ``timeout`` wall seconds, output
+def _launch(cmd, master_uri, log, timeout):
+    """roslaunch ``cmd`` on ``master_uri`` until it ends or ``timeout`` wall seconds, output
     appended to ``log``; (timed out, exit code, wall seconds)."""
     timed_out = False
     t0 = time.monotonic()
     with open(log, 'a') as out:
         proc = subprocess.Popen(cmd, stdout=out, stderr=subprocess.STDOUT,
-                                env=launch_env(master), stdin=subprocess.DEVNULL,
+                                env=launch_env(master_uri), stdin=subprocess.DEVNULL,
                                 start_new_session=True)
         with _live_lock:
             _live.add(proc)
