@@ -43,16 +43,35 @@ cameraAhead(0.08).     // m: the camera sits ahead of the axis the base turns ab
 // the optical axis, as vision_synth reports them). Rounded as vision_synth rounds.
 beforeTurning(A, D, P, Y, D, P, Y) :- A == 0.
 beforeTurning(A, D1, P1, Y1, Deg, Depth, Yaw)
-    :- A \== 0 & cameraAhead(F)
-     & R = A * math.pi / 180
-     & X1 = P1 * math.tan(D1 * math.pi / 180)
-     & Z0 = (F + P1) * math.cos(R) - X1 * math.sin(R) - F
-     & X0 = (F + P1) * math.sin(R) + X1 * math.cos(R)
-     & D0 = math.atan(X0 / Z0) * 180 / math.pi
+    :- A \== 0
+     & beforeMoving(pos(0, 0, 0), pos(0, 0, -A * math.pi / 180), D1, P1, Y1, Deg, Depth, Yaw).
+
+// Where a robot seen at (D1, P1, Y1) from my pose pos(X1, Z1, T1) was in the view from
+// my pose pos(X0, Y0, T0) (odometry, pos/3: metres, radians counter-clockwise): the
+// robot's cylinders are put in my base frame now (forward, left), then in the odometry
+// frame, then in my base frame then. Rounded as vision_synth rounds.
+beforeMoving(pos(X0, Y0, T0), pos(X1, Z1, T1), D1, P1, Y1, Deg, Depth, Yaw)
+    :- cameraAhead(F)
+     & Ahead = F + P1 & Left = -P1 * math.tan(D1 * math.pi / 180)
+     & WX = X1 + Ahead * math.cos(T1) - Left * math.sin(T1)
+     & WY = Z1 + Ahead * math.sin(T1) + Left * math.cos(T1)
+     & Ahead0 = (WX - X0) * math.cos(T0) + (WY - Y0) * math.sin(T0)
+     & Left0 = (WY - Y0) * math.cos(T0) - (WX - X0) * math.sin(T0)
+     & Z0 = Ahead0 - F
+     & D0 = math.atan(-Left0 / Z0) * 180 / math.pi
+     & clockwiseTurn(T0, T1, A)
      & Deg = math.round(D0 * 100) / 100
      & Depth = math.round(Z0 * 1000) / 1000
-     & halfTurn(Y1 - D1 + A + D0, Y0)
-     & Yaw = math.round(Y0 * 100) / 100.
+     & halfTurn(Y1 - D1 + A + D0, Y0w)
+     & Yaw = math.round(Y0w * 100) / 100.
+
+// IMPROVED (thesis §7.5, §8.1: the observer repositions): a robot not seen (steadily)
+// after it moved may be hidden from where I stand only, e.g. behind a box, or with one of
+// its cylinders behind another. I step aside, first sideStep(1, S) metres to my left, then
+// past where I stood to my right, each time facing it again, and report where I see it
+// from there in the view I first looked from (beforeMoving, by my odometry).
+sideStep(1, 0.3).
+sideStep(2, -0.6).
 
 // How far (degrees, clockwise) I turned from heading T0 to T1 (pos/3: radians, CCW).
 clockwiseTurn(T0, T1, A) :- halfTurn((T0 - T1) * 180 / math.pi, A).
@@ -87,6 +106,7 @@ halfTurn(D, D) :- D > -180 & D <= 180.
   .drop_desire(giveFeedback);
   -helping(R);
   -foundRobot(R,_,_,_);
+  -viewpoint(_,_,_);
   -lastSeen(R,_).
 
 // IMPROVED: say so when the robot was not found, instead of searching for ever.
@@ -149,6 +169,7 @@ halfTurn(D, D) :- D > -180 & D <= 180.
 : helping(R)
 <- !steadyView(R,Deg,Depth,Yaw);
   -+foundRobot(R,Deg,Depth,Yaw);
+  !noteViewpoint;
   .print("I'm ready.");
   .send(R,achieve,tryMove).
 
@@ -165,9 +186,39 @@ halfTurn(D, D) :- D > -180 & D <= 180.
   .print("reporting to ",R," -> ",Deg," ",Depth," ",Yaw," / ",Deg1," ",Depth1," ",Yaw1);
   .send(R,achieve,feedback(initPos(Deg,Depth,Yaw),currPos(Deg1,Depth1,Yaw1))).
 
--!reportFeedback(R)
+-!reportFeedback(R) : foundRobot(R,_,_,_) & viewpoint(_,_,_) & pos(_,_,_)
+<- .print("I cannot see ", R, " (steadily) from here; I look from aside");
+  !reportFromAside(R,1).
+-!reportFeedback(R) <- !lostSight(R).
+
++!lostSight(R)
 <- .print("I cannot see ", R, " (steadily) any more");
   .send(R,achieve,noFeedback("the helper lost sight of the robot after it moved")).
+
+// Where I stand when I first see R steadily: the view the reports are in (pos/3).
++!noteViewpoint : pos(X,Y,T) <- -+viewpoint(X,Y,T).
++!noteViewpoint <- -viewpoint(_,_,_).
+
++!reportFromAside(R,N)
+: sideStep(N,S) & foundRobot(R,Deg,Depth,Yaw) & viewpoint(X0,Y0,T0)
+<- !stepAside(S,Depth);
+  !steadyView(R,D1,P1,Y1);
+  ?pos(X1,Z1,T1);
+  ?beforeMoving(pos(X0,Y0,T0),pos(X1,Z1,T1),D1,P1,Y1,Deg1,Depth1,Yaw1);
+  .print("reporting to ",R," from aside -> ",Deg," ",Depth," ",Yaw," / ",Deg1," ",Depth1," ",Yaw1);
+  .send(R,achieve,feedback(initPos(Deg,Depth,Yaw),currPos(Deg1,Depth1,Yaw1))).
+-!reportFromAside(R,N) : helping(R) & Next = N + 1 & sideStep(Next,_)
+<- .print("I cannot see ", R, " (steadily) from there either; I look from the other side");
+  !reportFromAside(R,Next).
+-!reportFromAside(R,N) <- !lostSight(R).
+
+// S metres to my left (right when negative), then facing again a robot ahead of me at
+// Depth metres from my camera.
++!stepAside(S,Depth) : cameraAhead(F)
+<- turn(-90);
+  move(S);
+  turn(90 + math.atan(S / (Depth + F)) * 180 / math.pi);
+  !settle.
 
 // IMPROVED: where R is now, seen steadily, in the view it was first seen in: R is brought
 // back from the edge of the view first (keepInView), and the turns that took are undone.
@@ -249,6 +300,7 @@ halfTurn(D, D) :- D > -180 & D <= 180.
   .print("You're welcome, ",R);
   -helping(R);
   -foundRobot(R,_,_,_);
+  -viewpoint(_,_,_);
   -lastSeen(R,_).
 
 // FIX: the thesis copied each robot/4 percept into a mental note
