@@ -54,14 +54,7 @@ class HelperCentringTurnsTest {
 
     /** Frames showing the robot at angle until the helper asks for an action (null: none in time). */
     private Outbound.Action framesUntilAction(double angle, long waitMs) throws InterruptedException {
-        long deadline = System.currentTimeMillis() + waitMs;
-        while (System.currentTimeMillis() < deadline) {
-            camera(angle);
-            Outbound item = bridge.outbox().take(20);
-            if (item instanceof Outbound.Action action)
-                return action;
-        }
-        return null;
+        return CameraFrames.untilAction(bridge, () -> camera(angle), waitMs);
     }
 
     private void done(Outbound.Action action) {

@@ -94,14 +94,10 @@ class HelperKeepsInViewTest {
 
     /** Frames of the robot at robot until the helper asks for an action; that action. */
     private Outbound.Action framesUntilAction(double[] robot) throws InterruptedException {
-        long deadline = System.currentTimeMillis() + RunningAgents.WAIT_MS;
-        while (System.currentTimeMillis() < deadline) {
-            camera(robot);
-            Outbound item = bridge.outbox().take(30);
-            if (item instanceof Outbound.Action action)
-                return action;
-        }
-        throw new AssertionError("the helper asked for no action");
+        Outbound.Action action = CameraFrames.untilAction(bridge, () -> camera(robot), RunningAgents.WAIT_MS);
+        if (action == null)
+            throw new AssertionError("the helper asked for no action");
+        return action;
     }
 
     /** Frames of the robot at robot until the helper has its view (or gave up). */

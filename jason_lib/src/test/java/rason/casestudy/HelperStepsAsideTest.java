@@ -119,14 +119,10 @@ class HelperStepsAsideTest {
 
     /** Frames until the helper asks for an action; that action. */
     private Outbound.Action next(boolean visible) throws InterruptedException {
-        long deadline = System.currentTimeMillis() + RunningAgents.WAIT_MS;
-        while (System.currentTimeMillis() < deadline) {
-            camera(visible);
-            Outbound item = bridge.outbox().take(20);
-            if (item instanceof Outbound.Action action)
-                return action;
-        }
-        throw new AssertionError("the helper asked for no action");
+        Outbound.Action action = CameraFrames.untilAction(bridge, () -> camera(visible), RunningAgents.WAIT_MS);
+        if (action == null)
+            throw new AssertionError("the helper asked for no action");
+        return action;
     }
 
     /** Frames until the faulty agent believes answer; its text. */
