@@ -125,7 +125,7 @@ class PrivateMaster(object):
 
     def env(self, base=None):
         """``base`` (default os.environ) with ROS_MASTER_URI set to this master."""
-        return dict(os.environ if base is None else base, ROS_MASTER_URI=self.uri)
+        return master_env(self.uri, base)
 
     def start(self, timeout=20.0):
         """Start it and wait until it answers.
@@ -231,10 +231,15 @@ def stop_all():
 RUN_JVM_OPTIONS = '-XX:TieredStopAtLevel=1 -XX:-UseG1GC -XX:+UseSerialGC'
 
 
+def master_env(master_uri, base=None):
+    """``base`` (default os.environ) with ROS_MASTER_URI ``master_uri``."""
+    return dict(os.environ if base is None else base, ROS_MASTER_URI=master_uri)
+
+
 def launch_env(master_uri, base=None):
-    """The environment of a run's roslaunch: ``base`` (default os.environ) with
-    ROS_MASTER_URI ``master_uri`` and RASON_JVM_OPTIONS led by :data:`RUN_JVM_OPTIONS`."""
-    env = dict(os.environ if base is None else base, ROS_MASTER_URI=master_uri)
+    """The environment of a run's roslaunch: :func:`master_env`, RASON_JVM_OPTIONS led by
+    :data:`RUN_JVM_OPTIONS`."""
+    env = master_env(master_uri, base)
     env['RASON_JVM_OPTIONS'] = (RUN_JVM_OPTIONS + ' ' + env.get('RASON_JVM_OPTIONS', '')).strip()
     return env
 
