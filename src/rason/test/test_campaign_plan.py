@@ -87,7 +87,7 @@ def test_bad_options(kwargs):
         plan.make_plan(**options)
 
 
-def test_varied_runs_draw_poses_lighting_camera_noise_and_severity_from_their_seed():
+def test_varied_runs_draw_poses_lighting_camera_noise_severity_and_slip_from_their_seed():
     specs = plan.make_plan(['left_actuator'], 40, 3, varied=True)
     assert plan.make_plan(['left_actuator'], 40, 3, varied=True)[7].args == specs[7].args
     for spec in specs:
@@ -98,12 +98,19 @@ def test_varied_runs_draw_poses_lighting_camera_noise_and_severity_from_their_se
         assert 1.0 <= a['depth_noise'] <= 2.0
         assert 0.0 <= a['depth_dropout'] <= 0.05
         assert 0.3 <= a['severity'] <= 1.0
+        for robot in ('helper', 'faulty'):
+            left, right = a[robot + '_left_slip'], a[robot + '_right_slip']
+            assert 0.0 <= left <= 0.055 and 0.0 <= right <= 0.055
+            assert abs(left - right) <= 0.01 + 1e-4
         # the poses are spread_poses's of the run's seed: the other draws leave them alone
         assert {k: a[k] for k in poses.spread_poses(spec.seed)} == \
             poses.spread_poses(spec.seed, plan.VARIED_DISTANCE, plan.VARIED_FACING_AWAY)
     assert len({s.args['depth_noise'] for s in specs}) > 30   # each run draws its own
     severities = sorted(s.args['severity'] for s in specs)
     assert severities[0] < 0.45 and severities[-1] > 0.85      # mild ones and near-total ones
+    slips = sorted(s.args['faulty_left_slip'] for s in specs)
+    assert slips[0] < 0.01 and slips[-1] > 0.04
+    assert any(s.args['faulty_left_slip'] != s.args['faulty_right_slip'] for s in specs)
 
 
 def test_varied_dim_runs_leave_the_brightness_to_the_interaction():

@@ -125,6 +125,8 @@ WorldConfig worldFromParams(const ros::NodeHandle& pnh) {
     robot.left_marker = flag(s, "left_marker", false);
     robot.right_marker = flag(s, "right_marker", false);
     robot.back_marker = flag(s, "back_marker", false);
+    robot.slip.left = field(s, "left_slip", 0.0, "~" + name);
+    robot.slip.right = field(s, "right_slip", 0.0, "~" + name);
     world.robots.push_back(robot);
   }
   validate(world);
@@ -453,8 +455,9 @@ class Simulator {
     }
     // Like kobuki_node, stop when commands stop arriving.
     const bool fresh = now - robot.last_command <= cmd_vel_timeout_;
-    const WheelSpeeds speeds =
-        wheelSpeedsFor(fresh ? robot.linear : 0.0, fresh ? robot.angular : 0.0, world_.base);
+    const WheelSpeeds speeds = groundSpeeds(
+        wheelSpeedsFor(fresh ? robot.linear : 0.0, fresh ? robot.angular : 0.0, world_.base),
+        robot.config.slip);
     data_->ctrl[robot.left_motor] =
         servoSetPoint(speeds.left, data_->qvel[robot.left_dof], robot.left_integral, dt);
     data_->ctrl[robot.right_motor] =
@@ -466,7 +469,8 @@ class Simulator {
     tf2_msgs::TFMessage tf;
     for (auto& robot : robots_) {
       Robot& r = *robot;
-      r.odometry.update(data_->qpos[r.left_qpos], data_->qpos[r.right_qpos], t);
+      r.odometry.update(encoderAngle(data_->qpos[r.left_qpos], r.config.slip.left),
+                        encoderAngle(data_->qpos[r.right_qpos], r.config.slip.right), t);
       nav_msgs::Odometry odom;
       odom.header.stamp = stamp;
       odom.header.frame_id = r.config.name + "/odom";

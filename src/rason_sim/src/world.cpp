@@ -103,6 +103,9 @@ void validate(const WorldConfig& world) {
       throw std::invalid_argument("two robots are named '" + robot.name + "'");
     if (std::fabs(robot.start.x) > world.room_x / 2 || std::fabs(robot.start.y) > world.room_y / 2)
       throw std::invalid_argument("robot '" + robot.name + "' starts outside the room");
+    for (double slip : {robot.slip.left, robot.slip.right})
+      if (!(slip >= 0.0 && slip < 0.5))
+        throw std::invalid_argument("robot '" + robot.name + "': wheel slip must be in [0, 0.5)");
   }
   if (world.room_x <= 1.0 || world.room_y <= 1.0) throw std::invalid_argument("room too small");
   if (world.timestep <= 0.0 || world.timestep > 0.01)

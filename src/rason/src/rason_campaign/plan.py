@@ -6,7 +6,8 @@ jitter of the start poses (about ±5 cm, ±3°) and of the lighting (brightness 
 
 ``varied`` diagnosis runs (issue 18) are drawn far wider (:func:`varied_args`): any relative
 pose 1-3 m apart, Faulty facing away within ±30°, the Helper in any heading, the
-camera's depth noise, dropouts, the lighting and the actuator fault's severity.
+camera's depth noise, dropouts, the lighting, the actuator fault's severity and both
+robots' wheel slip.
 
 Two scenarios: ``diagnosis`` (the thesis's case study, faulty_helper.launch) and
 ``fault_tolerance`` (issue 15), where each planned run is made twice with the same seed and
@@ -38,6 +39,12 @@ VARIED_DEPTH_DROPOUT = (0.0, 0.05)           # probability a depth pixel has no 
 # nothing) down to 0.3, where a 1 m move drifts past bad_move's 8 degrees after ~0.8 m;
 # much below it the fault is not noticed within the mission's 1 m moves at all.
 VARIED_SEVERITY = (0.3, 1.0)
+# Wheel slip (rason_sim <robot>/left_slip, right_slip): each robot's wheels slip by a share
+# of their rotation drawn over VARIED_WHEEL_SLIP, the left one up to VARIED_SLIP_DIFFERENCE
+# more or less than the right (one floor, two tyres): odometry overestimates the travel by
+# up to 5 % and calls straight a path that veers up to 2.5 degrees a metre.
+VARIED_WHEEL_SLIP = (0.0, 0.05)
+VARIED_SLIP_DIFFERENCE = 0.01
 
 # Interaction faults (thesis §7.5-7.6): faulty_helper.launch's interaction:= argument sets
 # them; a jittered argument the interaction sets itself is left out (else it would win).
@@ -145,10 +152,10 @@ def jittered_args(seed, jitter=True):
 
 
 def varied_args(seed):
-    """Start poses, lighting, camera noise and fault severity of one varied run, a pure
-    function of its seed: poses by :func:`rason_campaign.poses.spread_poses` over
-    VARIED_DISTANCE and VARIED_FACING_AWAY (Helper in any heading), the rest uniform over
-    its VARIED_ range (the severity matters only to an actuator fault).
+    """Start poses, lighting, camera noise, fault severity and wheel slip of one varied
+    run, a pure function of its seed: poses by :func:`rason_campaign.poses.spread_poses`
+    over VARIED_DISTANCE and VARIED_FACING_AWAY (Helper in any heading), the rest uniform
+    over its VARIED_ range (the severity matters only to an actuator fault).
 
     :rtype: dict of launch argument -> value
     """
@@ -158,6 +165,11 @@ def varied_args(seed):
     args['depth_noise'] = round(rng.uniform(*VARIED_DEPTH_NOISE), 3)
     args['depth_dropout'] = round(rng.uniform(*VARIED_DEPTH_DROPOUT), 4)
     args['severity'] = round(rng.uniform(*VARIED_SEVERITY), 3)
+    for robot in ('helper', 'faulty'):
+        slip = rng.uniform(*VARIED_WHEEL_SLIP)
+        half_difference = rng.uniform(-1, 1) * VARIED_SLIP_DIFFERENCE / 2
+        args[robot + '_left_slip'] = round(max(0.0, slip + half_difference), 4)
+        args[robot + '_right_slip'] = round(max(0.0, slip - half_difference), 4)
     return args
 
 

@@ -25,6 +25,18 @@ inline WheelSpeeds wheelSpeedsFor(double linear, double angular, const BaseGeome
           (linear + angular * half_track) / base.wheel_radius};
 }
 
+// With wheel slip the motor controller still holds each encoder at the commanded speed, but
+// the wheel's contact with the floor rolls only (1 - slip) as far: the simulated wheel
+// joint (which rolls without slipping) turns at ground speed, and the encoder reads more.
+inline WheelSpeeds groundSpeeds(const WheelSpeeds& commanded, const WheelSlip& slip) {
+  return {commanded.left * (1.0 - slip.left), commanded.right * (1.0 - slip.right)};
+}
+
+// What a wheel's encoder reads (rad) when its contact with the floor rolled `rolled` rad.
+inline double encoderAngle(double rolled, double slip) {
+  return rolled / (1.0 - slip);
+}
+
 inline double normalizeAngle(double a) {
   return std::atan2(std::sin(a), std::cos(a));
 }

@@ -18,6 +18,12 @@ struct Pose2D {
   double x = 0.0, y = 0.0, yaw = 0.0;  // metres, radians (counter-clockwise from +x)
 };
 
+// The share of each wheel's rotation that does not move the robot over the floor (0: none;
+// a few per cent on a real floor), so odometry overestimates the robot's travel.
+struct WheelSlip {
+  double left = 0.0, right = 0.0;
+};
+
 struct RobotConfig {
   std::string name;             // also the ROS namespace and tf prefix
   Pose2D start;
@@ -25,6 +31,7 @@ struct RobotConfig {
   bool left_marker = false;     // green cylinder on the robot's left
   bool right_marker = false;    // orange cylinder on the robot's right
   bool back_marker = false;     // blue cylinder behind the middle of the two (thesis §8.1)
+  WheelSlip slip;
 };
 
 struct LightConfig {
