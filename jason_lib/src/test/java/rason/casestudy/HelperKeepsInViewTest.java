@@ -34,7 +34,6 @@ class HelperKeepsInViewTest {
             .toAbsolutePath().normalize();
     private static final long NOW = 100 * RunningAgents.SECOND;
     /** The camera ahead of the turning axis (m), as helper.asl's cameraAhead. */
-    private static final double CAMERA_AHEAD = 0.08;
 
     private static final String WATCHER = "{ include(\"" + HELPER + "\") }\n" + """
             helping(faulty).
@@ -81,15 +80,8 @@ class HelperKeepsInViewTest {
      * angle, depth along the optical axis: vision_synth's conventions).
      */
     static double[] afterTurning(double angle, double depth, double yaw, double turnedCw) {
-        double a = Math.toRadians(turnedCw);
-        double forward = CAMERA_AHEAD + depth; // base frame: forward, left
-        double left = -depth * Math.tan(Math.toRadians(angle));
-        double forward1 = forward * Math.cos(a) - left * Math.sin(a);
-        double left1 = forward * Math.sin(a) + left * Math.cos(a);
-        double depth1 = forward1 - CAMERA_AHEAD;
-        double angle1 = Math.toDegrees(Math.atan2(-left1, depth1));
-        double heading1 = (yaw - angle) - turnedCw;
-        return new double[] { angle1, depth1, heading1 + angle1 };
+        double[] robot = CameraFrames.robotSeenAt(new double[] { angle, depth, yaw });
+        return CameraFrames.view(new double[] { 0, 0, -Math.toRadians(turnedCw) }, robot);
     }
 
     /** Frames of the robot at robot until the helper asks for an action; that action. */

@@ -36,7 +36,6 @@ class HelperStepsAsideTest {
     private static final Path HELPER = Path.of("..", "src", "rason", "agents", "case_study", "helper.asl")
             .toAbsolutePath().normalize();
     /** The camera ahead of the turning axis (m), as helper.asl's cameraAhead. */
-    private static final double CAMERA_AHEAD = 0.08;
     private static final long FRAME_PERIOD = 10_000_000L;
     /** Where the helper first saw the robot steadily (odometry: x, y, heading CCW). */
     private static final double[] VIEWPOINT = { 1.0, 2.0, 0.5 };
@@ -55,24 +54,9 @@ class HelperStepsAsideTest {
     /** The robot in the odometry frame (x, y, heading CCW), 1.6 m ahead and a little left. */
     private static double[] robotAt() {
         double th = VIEWPOINT[2];
-        double ahead = CAMERA_AHEAD + 1.6, left = 0.1;
+        double ahead = CameraFrames.CAMERA_AHEAD + 1.6, left = 0.1;
         return new double[] { VIEWPOINT[0] + ahead * Math.cos(th) - left * Math.sin(th),
                 VIEWPOINT[1] + ahead * Math.sin(th) + left * Math.cos(th), th + 0.4 };
-    }
-
-    /**
-     * What a helper at pose sees of a robot at (x, y, heading CCW): angle (degrees,
-     * clockwise), depth along the optical axis, yaw = heading relative to the helper's
-     * (clockwise) + angle, as vision_synth reports them.
-     */
-    static double[] view(double[] pose, double[] robot) {
-        double dx = robot[0] - pose[0], dy = robot[1] - pose[1];
-        double ahead = dx * Math.cos(pose[2]) + dy * Math.sin(pose[2]);
-        double left = -dx * Math.sin(pose[2]) + dy * Math.cos(pose[2]);
-        double depth = ahead - CAMERA_AHEAD;
-        double angle = Math.toDegrees(Math.atan2(-left, depth));
-        double yaw = Math.toDegrees(pose[2] - robot[2]) + angle;
-        return new double[] { angle, depth, yaw - 360 * Math.ceil((yaw - 180) / 360) }; // (-180, 180]
     }
 
     /** Faulty, in the same process: notes the helper's answer. */
@@ -112,7 +96,7 @@ class HelperStepsAsideTest {
             bridge.perceive("vision_synth_robots", new String[] { counter }, now);
             return;
         }
-        double[] v = view(pose, robotAt());
+        double[] v = CameraFrames.view(pose, robotAt());
         bridge.perceive("vision_synth_robots", new String[] {
                 String.format(Locale.ROOT, "robot(faulty,%.2f,%.3f,%.2f)", v[0], v[1], v[2]), counter }, now);
     }
@@ -204,7 +188,7 @@ class HelperStepsAsideTest {
         String feedback = answer(faulty, true);
         assertTrue(feedback.startsWith("feedback("), feedback);
         assertView(first, numbers(feedback, "initPos"));
-        assertView(view(VIEWPOINT, robotAt()), numbers(feedback, "currPos"));
+        assertView(CameraFrames.view(VIEWPOINT, robotAt()), numbers(feedback, "currPos"));
         assertTrue(Math.abs(pose[0] - VIEWPOINT[0]) + Math.abs(pose[1] - VIEWPOINT[1]) > 0.2, "the helper stands elsewhere");
     }
 
@@ -224,7 +208,7 @@ class HelperStepsAsideTest {
         double[] robot = robotAt();
         double[][] poses = { { 1.3, 1.7, 0.2 }, { 0.7, 2.4, 1.1 }, { 1.0, 2.0, 0.5 + Math.toRadians(170) + Math.PI } };
         for (double[] there : poses) {
-            double[] seen = view(there, robot);
+            double[] seen = CameraFrames.view(there, robot);
             if (seen[1] <= 0)
                 continue; // behind the camera
             Literal query = Literal.parseLiteral(String.format(Locale.ROOT,
@@ -236,7 +220,7 @@ class HelperStepsAsideTest {
             String[] names = { "D", "P", "Y" };
             for (int i = 0; i < 3; i++)
                 back[i] = ((NumberTerm) u.get(names[i])).solve();
-            assertView(view(VIEWPOINT, robot), back);
+            assertView(CameraFrames.view(VIEWPOINT, robot), back);
         }
     }
 }
