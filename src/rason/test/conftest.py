@@ -7,7 +7,7 @@ import re
 
 def _rostest_scripts(folder):
     names = set()
-    for path in glob.glob(os.path.join(folder, '**', '*.test'), recursive=True):
+    for path in glob.glob(os.path.join(folder, '**', '*.test'), recursive=True):  # test/slow too
         with open(path) as f:
             names.update(re.findall(r'type="(test_[^"]+\.py)"', f.read()))
     return sorted(names)
