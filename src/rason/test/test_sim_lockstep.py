@@ -74,7 +74,6 @@ class TestSimLockstep(unittest.TestCase):
                  and heard - stamp > CAMERA_PERIOD + 5 * CLOCK_STEP]
         self.assertEqual(ahead, [], 'simulated time had moved more than a camera period past these frames')
 
-
     def test_the_simulation_goes_no_faster_than_its_ceiling(self):
         # vision_synth alone takes a few ms a frame: without the ceiling lockstep's pace
         # would be well above 10 times real time

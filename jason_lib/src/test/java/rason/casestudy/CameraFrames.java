@@ -9,7 +9,10 @@ import rason.bridge.Outbound;
  */
 final class CameraFrames {
 
-    /** Where the camera sits ahead of the helper's axis (m), as rason_sim mounts it. */
+    /**
+     * Where the camera sits ahead of the helper's turning axis (m), as rason_sim mounts it
+     * and helper.asl's cameraAhead says.
+     */
     static final double CAMERA_AHEAD = 0.08;
 
     private CameraFrames() {
@@ -50,5 +53,13 @@ final class CameraFrames {
                 return action;
         }
         return null;
+    }
+
+    /** {@link #untilAction}, failing the test when the agent asked for no action in time. */
+    static Outbound.Action expectAction(Bridge bridge, Runnable frame, long waitMs) throws InterruptedException {
+        Outbound.Action action = untilAction(bridge, frame, waitMs);
+        if (action == null)
+            throw new AssertionError("the helper asked for no action");
+        return action;
     }
 }

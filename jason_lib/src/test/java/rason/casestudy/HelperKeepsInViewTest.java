@@ -33,7 +33,6 @@ class HelperKeepsInViewTest {
     private static final Path HELPER = Path.of("..", "src", "rason", "agents", "case_study", "helper.asl")
             .toAbsolutePath().normalize();
     private static final long NOW = 100 * RunningAgents.SECOND;
-    /** The camera ahead of the turning axis (m), as helper.asl's cameraAhead. */
 
     private static final String WATCHER = "{ include(\"" + HELPER + "\") }\n" + """
             helping(faulty).
@@ -86,10 +85,7 @@ class HelperKeepsInViewTest {
 
     /** Frames of the robot at robot until the helper asks for an action; that action. */
     private Outbound.Action framesUntilAction(double[] robot) throws InterruptedException {
-        Outbound.Action action = CameraFrames.untilAction(bridge, () -> camera(robot), RunningAgents.WAIT_MS);
-        if (action == null)
-            throw new AssertionError("the helper asked for no action");
-        return action;
+        return CameraFrames.expectAction(bridge, () -> camera(robot), RunningAgents.WAIT_MS);
     }
 
     /** Frames of the robot at robot until the helper has its view (or gave up). */

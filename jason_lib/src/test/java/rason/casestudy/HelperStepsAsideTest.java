@@ -35,7 +35,6 @@ class HelperStepsAsideTest {
 
     private static final Path HELPER = Path.of("..", "src", "rason", "agents", "case_study", "helper.asl")
             .toAbsolutePath().normalize();
-    /** The camera ahead of the turning axis (m), as helper.asl's cameraAhead. */
     private static final long FRAME_PERIOD = 10_000_000L;
     /** Where the helper first saw the robot steadily (odometry: x, y, heading CCW). */
     private static final double[] VIEWPOINT = { 1.0, 2.0, 0.5 };
@@ -103,10 +102,7 @@ class HelperStepsAsideTest {
 
     /** Frames until the helper asks for an action; that action. */
     private Outbound.Action next(boolean visible) throws InterruptedException {
-        Outbound.Action action = CameraFrames.untilAction(bridge, () -> camera(visible), RunningAgents.WAIT_MS);
-        if (action == null)
-            throw new AssertionError("the helper asked for no action");
-        return action;
+        return CameraFrames.expectAction(bridge, () -> camera(visible), RunningAgents.WAIT_MS);
     }
 
     /** Frames until the faulty agent believes answer; its text. */
