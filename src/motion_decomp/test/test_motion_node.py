@@ -221,8 +221,12 @@ def test_a_cancel_stops_the_commanded_odometry_too(ros, robot):
     send('a', 1, 'move', ['5'])
     for _ in range(10):
         tick(0.01)
+    mark = len(ros.published)
     send('a', 1, Action.CANCEL, [Event.DROPPED])
     stopped = ros.now
+    at_cancel = commanded(ros, mark)         # reported at once, like a tick that stops
+    assert [(m.header.stamp.to_sec(), m.twist.twist.linear.x) for m in at_cancel] == [
+        (pytest.approx(stopped), 0.0)]
     for _ in range(30):
         tick()
     last = commanded(ros)[-1]

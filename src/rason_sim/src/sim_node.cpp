@@ -28,6 +28,7 @@
 #include <thread>
 #include <vector>
 
+#include "rason_sim/control_ticks.h"
 #include "rason_sim/depth_camera.h"
 #include "rason_sim/diff_drive.h"
 #include "rason_sim/renderer.h"
@@ -135,11 +136,12 @@ WorldConfig worldFromParams(const ros::NodeHandle& pnh) {
 
 // ---- one simulated robot ----------------------------------------------------------------
 
-// Lockstep: the stamp (sim s) of the last frame published to a consumer and of the newest
-// frame the consumer reported done (vision_synth's robots_seen, stamped as the frame), with
-// the wall times of both. Reports arrive on a thread of their own, so done_wall is when the
-// report came, not when the simulation loop next looked.
-struct FrameAck {
+// Lockstep: the stamp (sim s) of the last message published to a consumer and of the newest
+// one the consumer reported done, with the wall times of both: a camera frame and
+// vision_synth's robots_seen, stamped as the frame; odometry and the fault injector's
+// odom_filtered, stamped as the odometry. Reports arrive on a thread of their own, so
+// done_wall is when the report came, not when the simulation loop next looked.
+struct StampAck {
   std::mutex mutex;
   std::condition_variable reported;
   double sent = -1.0, done = -1.0;
@@ -163,6 +165,24 @@ struct FrameAck {
   }
 };
 
+// Lockstep with the robot's controller: its reported ticks (see control_ticks.h), written by
+// the report thread and read by the simulation loop.
+struct ControlAck {
+  std::mutex mutex;
+  std::condition_variable reported;
+  ControlTicks ticks;
+
+  explicit ControlAck(double period) : ticks(period) {}
+
+  void onTick(double stamp, bool commands_motion) {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      ticks.onTick(stamp, commands_motion);
+    }
+    reported.notify_all();
+  }
+};
+
 struct Robot {
   RobotConfig config;
   int root_qpos = -1, root_qvel = -1, body = -1, camera = -1;
@@ -173,8 +193,9 @@ struct Robot {
   double linear = 0.0, angular = 0.0, last_command = -1e9;
   bool teleport = false;
   geometry_msgs::Pose2D teleport_pose;
-  ros::Subscriber cmd_vel_sub, set_pose_sub, frame_ack_sub;
-  FrameAck frame_ack;
+  ros::Subscriber cmd_vel_sub, set_pose_sub, frame_ack_sub, odom_ack_sub, control_ack_sub;
+  StampAck frame_ack, odom_ack;
+  std::unique_ptr<ControlAck> control_ack;  // with lockstep and a ~control_ack_topic
   ros::Publisher odom_pub, true_pose_pub, image_pub, depth_pub, cloud_pub, info_pub;
   geometry_msgs::TransformStamped world_to_odom;
 
@@ -245,6 +266,10 @@ class Simulator {
     pnh.param("frame_ack_topic", frame_ack_topic_, std::string("robots_seen"));
     pnh.param("frame_ack_timeout", frame_ack_timeout_, 2.0);
     pnh.param("max_lockstep_factor", max_lockstep_factor_, 2.5);
+    pnh.param("control_ack_topic", control_ack_topic_, std::string("odom_commanded"));
+    pnh.param("odom_ack_topic", odom_ack_topic_, std::string("odom_filtered"));
+    pnh.param("control_rate", control_rate_, 50.0);
+    pnh.param("control_ack_timeout", control_ack_timeout_, 0.5);
     int seed = 1;
     pnh.param("seed", seed, 1);
     rng_.reseed(static_cast<uint64_t>(seed));
@@ -259,6 +284,10 @@ class Simulator {
       throw std::invalid_argument("~frame_ack_timeout must be in (0, 3600) s");
     if (!(max_lockstep_factor_ >= kMinLockstepFactor && max_lockstep_factor_ <= 1000.0))
       throw std::invalid_argument("~max_lockstep_factor must be in [0.2, 1000]");
+    if (!(control_rate_ > 0.0 && control_rate_ <= 1000.0))
+      throw std::invalid_argument("~control_rate must be in (0, 1000] Hz");
+    if (!(control_ack_timeout_ > 0.0 && control_ack_timeout_ < 3600.0))
+      throw std::invalid_argument("~control_ack_timeout must be in (0, 3600) s");
     if (noise_.dropout < 0.0 || noise_.dropout >= 1.0)
       throw std::invalid_argument("~camera/depth_dropout must be in [0, 1)");
 
@@ -276,8 +305,10 @@ class Simulator {
     if (lockstep_)
       ROS_INFO("rason_sim: %zu robots, real-time factor %.2f (0 = as fast as possible), seed %d; "
                "lockstep: each camera frame waits for <robot>/%s of the one before (at factor 0 "
-               "at most %.1fx real time)", robots_.size(), real_time_factor_, seed,
-               frame_ack_topic_.c_str(), max_lockstep_factor_);
+               "at most %.1fx real time)%s%s%s", robots_.size(), real_time_factor_, seed,
+               frame_ack_topic_.c_str(), max_lockstep_factor_,
+               control_ack_topic_.empty() ? "" : "; a moving robot's controller ticks (<robot>/",
+               control_ack_topic_.c_str(), control_ack_topic_.empty() ? "" : ") are waited for");
     else
       ROS_INFO("rason_sim: %zu robots, real-time factor %.2f (0 = as fast as possible), seed %d",
                robots_.size(), real_time_factor_, seed);
@@ -300,17 +331,24 @@ class Simulator {
     while (ros::ok()) {
       ros::spinOnce();
       const double now = data_->time;
-      for (auto& robot : robots_) applyCommands(*robot, now, substeps * model_->opt.timestep);
+      for (auto& robot : robots_) {
+        if (robot->control_ack) awaitControlTick(*robot, now);
+        applyCommands(*robot, now, substeps * model_->opt.timestep);
+      }
       for (int i = 0; i < substeps; ++i) mj_step(model_, data_);
       const double t = data_->time;
-      rosgraph_msgs::Clock clock;
-      clock.clock = ros::Time(t);
-      clock_pub_.publish(clock);
+      // odometry before the clock: with lockstep, a controller tick that the clock at t sets
+      // off reads the odometry of t, at any pace
       if (t >= next_odom) {
         publishOdometry(t);
+        if (lockstep_)
+          for (auto& robot : robots_) awaitOdometryRelayed(*robot);
         next_odom += 1.0 / odom_rate_;
         if (next_odom < t) next_odom = t;  // never try to catch up with a burst
       }
+      rosgraph_msgs::Clock clock;
+      clock.clock = ros::Time(t);
+      clock_pub_.publish(clock);
       if (t >= next_camera) {
         for (auto& robot : robots_) {
           if (lockstep_) awaitFrameDone(*robot);
@@ -410,6 +448,25 @@ class Simulator {
             ros::VoidPtr(), &ack_queue_);
         robot->frame_ack_sub = nh.subscribe(options);
       }
+    }
+    if (lockstep_ && !odom_ack_topic_.empty()) {
+      auto options = ros::SubscribeOptions::create<nav_msgs::Odometry>(
+          n + "/" + odom_ack_topic_, 50,
+          [raw](const nav_msgs::Odometry::ConstPtr& msg) { raw->odom_ack.onDone(msg->header.stamp.toSec()); },
+          ros::VoidPtr(), &ack_queue_);
+      robot->odom_ack_sub = nh.subscribe(options);
+    }
+    if (lockstep_ && !control_ack_topic_.empty()) {
+      robot->control_ack.reset(new ControlAck(1.0 / control_rate_));
+      ControlAck* ack = robot->control_ack.get();
+      auto options = ros::SubscribeOptions::create<nav_msgs::Odometry>(
+          n + "/" + control_ack_topic_, 50,
+          [ack](const nav_msgs::Odometry::ConstPtr& msg) {
+            const auto& v = msg->twist.twist;
+            ack->onTick(msg->header.stamp.toSec(), v.linear.x != 0.0 || v.angular.z != 0.0);
+          },
+          ros::VoidPtr(), &ack_queue_);
+      robot->control_ack_sub = nh.subscribe(options);
     }
     robots_.push_back(robot);
   }
@@ -527,25 +584,78 @@ class Simulator {
   // and the agents reading it, behind the world: seen in simulated time, a frame takes at
   // most one camera period to process at any speed.
   void awaitFrameDone(Robot& robot) {
-    FrameAck& ack = robot.frame_ack;
-    std::unique_lock<std::mutex> lock(ack.mutex);
-    if (ack.sent < 0.0) return;
-    const auto deadline = std::chrono::steady_clock::now() +
-                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                              std::chrono::duration<double>(frame_ack_timeout_));
-    if (ack.reported.wait_until(lock, deadline, [&ack] { return ack.isDone(); })) {
+    const double took = awaitDone(robot.frame_ack, frame_ack_timeout_);
+    if (took > 0.0) {
       // the pace for the next period: a camera period in (a little more than) the wall
       // time the consumer took for this frame, smoothed
-      const double took = std::chrono::duration<double>(ack.done_wall - ack.sent_wall).count();
       frame_wall_ = frame_wall_ <= 0.0 ? took : 0.8 * frame_wall_ + 0.2 * took;
       lockstep_factor_ = std::clamp(1.0 / (camera_rate_ * kLockstepMargin * std::max(frame_wall_, 1e-4)),
                                     kMinLockstepFactor, max_lockstep_factor_);
-    } else {
-      ROS_WARN_THROTTLE(10.0, "rason_sim: no %s/%s for the frame at %.2f s within %.1f s (wall); "
-                        "going on without it", robot.config.name.c_str(), frame_ack_topic_.c_str(),
-                        ack.sent, frame_ack_timeout_);
+    } else if (took < 0.0) {
+      ROS_WARN_THROTTLE(10.0, "rason_sim: no %s/%s for the frame within %.1f s (wall); going on "
+                        "without it", robot.config.name.c_str(), frame_ack_topic_.c_str(),
+                        frame_ack_timeout_);
     }
+  }
+
+  // Lockstep: the odometry just published waits (up to ~control_ack_timeout) until the node
+  // that relays it to the controller (the fault injector's odom_filtered) has passed it on,
+  // so that a busy CPU never leaves the controller steering by an old pose.
+  void awaitOdometryRelayed(Robot& robot) {
+    if (robot.odom_ack_sub.getNumPublishers() == 0) return;
+    robot.odom_ack.onSent(data_->time);
+    if (awaitDone(robot.odom_ack, control_ack_timeout_) < 0.0)
+      ROS_WARN_THROTTLE(10.0, "rason_sim: no %s/%s for the odometry at %.2f s within %.1f s "
+                        "(wall); going on without it", robot.config.name.c_str(),
+                        odom_ack_topic_.c_str(), data_->time, control_ack_timeout_);
+  }
+
+  // Waits (wall clock, up to timeout) until ack's consumer has reported the last message
+  // sent to it done. Returns the wall seconds it took, 0 when nothing was outstanding, or
+  // -1 when it timed out (the message is then given up).
+  static double awaitDone(StampAck& ack, double timeout) {
+    std::unique_lock<std::mutex> lock(ack.mutex);
+    if (ack.sent < 0.0) return 0.0;
+    const auto deadline = std::chrono::steady_clock::now() +
+                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              std::chrono::duration<double>(timeout));
+    const bool done = ack.reported.wait_until(lock, deadline, [&ack] { return ack.isDone(); });
     ack.sent = -1.0;
+    if (!done) return -1.0;
+    return std::max(std::chrono::duration<double>(ack.done_wall - ack.sent_wall).count(), 1e-9);
+  }
+
+  // Lockstep with the robot's controller (control_ticks.h): before stepping from now, wait
+  // (wall clock, up to ~control_ack_timeout) for a tick that is due, and after a tick that
+  // stopped the robot, for the zero twist to reach the base (through the fault injector).
+  void awaitControlTick(Robot& robot, double now) {
+    ControlAck& ack = *robot.control_ack;
+    const auto deadline = std::chrono::steady_clock::now() +
+                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              std::chrono::duration<double>(control_ack_timeout_));
+    std::unique_lock<std::mutex> lock(ack.mutex);
+    if (!ack.reported.wait_until(lock, deadline, [&ack, now] { return !ack.ticks.tickDue(now); })) {
+      ROS_WARN_THROTTLE(10.0, "rason_sim: no %s/%s for the control tick due at %.2f s within %.1f s "
+                        "(wall); going on without waiting for that controller until it reports a "
+                        "motion again", robot.config.name.c_str(), control_ack_topic_.c_str(),
+                        ack.ticks.last() + ack.ticks.period(), control_ack_timeout_);
+      ack.ticks.giveUp();
+      return;
+    }
+    if (!ack.ticks.stopPending()) return;
+    lock.unlock();
+    // cmd_vel is served by the global queue, which this loop spins
+    while (robot.linear != 0.0 || robot.angular != 0.0) {
+      if (std::chrono::steady_clock::now() >= deadline) {
+        ROS_WARN_THROTTLE(10.0, "rason_sim: %s's controller stopped it at %.2f s, but no zero "
+                          "%s/cmd_vel came within %.1f s (wall); going on", robot.config.name.c_str(),
+                          now, robot.config.name.c_str(), control_ack_timeout_);
+        break;
+      }
+      ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(0.001));
+    }
+    lock.lock();
+    ack.ticks.stopReached();
   }
 
   // Renders and publishes robot's camera at t; false when it has none or nobody looks.
@@ -678,6 +788,10 @@ class Simulator {
   static constexpr double kLockstepMargin = 1.1, kMinLockstepFactor = 0.2;
   std::string frame_ack_topic_;
   double frame_ack_timeout_ = 2.0;
+  std::string control_ack_topic_;  // a controller's tick reports, <robot>/this; empty: none
+  std::string odom_ack_topic_;     // the odometry relayed to the controller; empty: none
+  double control_rate_ = 50.0;     // Hz of those ticks (motion_decomp's ~rate)
+  double control_ack_timeout_ = 0.5;
   DepthNoise noise_;
   PixelNoise rng_;
   mjModel* model_ = nullptr;

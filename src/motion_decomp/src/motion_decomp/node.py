@@ -20,7 +20,7 @@ Topics (relative names: run one node per robot, in the robot's namespace or with
   zero Twist when it ends; nothing while idle
 - publishes ``odom_commanded`` (nav_msgs/Odometry, frame ``~odom_commanded_frame``, child
   ``~base_frame``): the dead reckoning of the twists this node commanded, from the zero pose,
-  at every control tick while a motion runs and at 1 Hz while idle
+  at every control tick while a motion runs, when one is taken back, and at 1 Hz while idle
 - publishes ``jason/event`` (rason_msgs/Event): ``action_started [action_id]`` when a motion
   is taken (not for ``bad_parameters``), then one ``action_feedback`` per handled action,
   parameters ``[result, str(action_id)]``
@@ -233,7 +233,11 @@ class MotionDecompNode(object):
             self._actions.pop(action.key, None)
             if command is not None:
                 # at once, and under the lock so no command of the cancelled motion follows
-                self._send(command, rospy.get_time())
+                now = rospy.get_time()
+                self._send(command, now)
+                # reported like a tick that stops: a simulator in lockstep with this loop
+                # (rason_sim ~control_ack_topic) then stops waiting for its next tick
+                self._publish_commanded(now, running=True)
         if cancelled:
             rospy.loginfo('motion_decomp: %s: %s (id %d) %s (%s)', action.agent, action_text(action),
                           action.action_id, 'stopped' if command else 'taken out of the queue',
