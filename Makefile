@@ -88,8 +88,7 @@ demo: setup
 	$(ROSENV) roslaunch rason faulty_helper.launch fault:=both_actuators
 
 # The case study at real-time factor 1 and 0 (two campaign runs, about 40 s): same diagnosis,
-# steps within 10 %. Not in make test (it lives in test/slow, outside the rostest glob): 2 of
-# 15 runs at factor 0 had robot location 6.5 and 8.8 % short (README).
+# steps within 10 %. Part of make test too; this runs it alone.
 rate-check: setup
 	$(ROSENV) rostest rason rate_independence.test
 
