@@ -208,6 +208,11 @@ int requireId(const mjModel* m, mjtObj type, const std::string& name) {
   return id;
 }
 
+// seconds as a steady_clock duration
+std::chrono::steady_clock::duration wallSeconds(double seconds) {
+  return std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
+}
+
 geometry_msgs::Quaternion yawQuaternion(double yaw) {
   geometry_msgs::Quaternion q;
   q.z = std::sin(yaw / 2.0);
@@ -230,8 +235,7 @@ class WallPacer {
   // when on time). Lateness within the slack is caught up, so sleep jitter does not
   // slow the simulation down.
   double wait(double t) {
-    const Clock::time_point due = wall_base_ + std::chrono::duration_cast<Clock::duration>(
-                                                   std::chrono::duration<double>((t - t_base_) / factor_));
+    const Clock::time_point due = wall_base_ + wallSeconds((t - t_base_) / factor_);
     const Clock::time_point now = Clock::now();
     const double late = std::chrono::duration<double>(now - due).count();
     if (late > kSlack) {
@@ -365,8 +369,7 @@ class Simulator {
         // as much as a lagging camera did. A step takes its share of the wall time a frame
         // needs; until every camera's consumer is up (nodes starting), about real time.
         const double factor = framesConsumed() ? lockstep_factor_ : 1.0;
-        std::this_thread::sleep_until(step_wall + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                                      std::chrono::duration<double>(control_period / factor)));
+        std::this_thread::sleep_until(step_wall + wallSeconds(control_period / factor));
         step_wall = std::chrono::steady_clock::now();
       } else if (real_time_factor_ > 0.0) {
         const double dropped = pacer.wait(t);
@@ -441,34 +444,34 @@ class Simulator {
       robot->depth_pub = nh.advertise<sensor_msgs::Image>(n + "/camera/depth_registered/image_raw", 2);
       robot->cloud_pub = nh.advertise<sensor_msgs::PointCloud2>(n + "/camera/depth_registered/points", 2);
       robot->info_pub = nh.advertise<sensor_msgs::CameraInfo>(n + "/camera/rgb/camera_info", 2);
-      if (lockstep_) {
-        auto options = ros::SubscribeOptions::create<rason_msgs::RobotSightings>(
-            n + "/" + frame_ack_topic_, 10,
-            [raw](const rason_msgs::RobotSightings::ConstPtr& msg) { raw->frame_ack.onDone(msg->header.stamp.toSec()); },
-            ros::VoidPtr(), &ack_queue_);
-        robot->frame_ack_sub = nh.subscribe(options);
-      }
+      if (lockstep_)
+        robot->frame_ack_sub = subscribeReports<rason_msgs::RobotSightings>(
+            nh, n + "/" + frame_ack_topic_, 10,
+            [raw](const rason_msgs::RobotSightings::ConstPtr& msg) { raw->frame_ack.onDone(msg->header.stamp.toSec()); });
     }
-    if (lockstep_ && !odom_ack_topic_.empty()) {
-      auto options = ros::SubscribeOptions::create<nav_msgs::Odometry>(
-          n + "/" + odom_ack_topic_, 50,
-          [raw](const nav_msgs::Odometry::ConstPtr& msg) { raw->odom_ack.onDone(msg->header.stamp.toSec()); },
-          ros::VoidPtr(), &ack_queue_);
-      robot->odom_ack_sub = nh.subscribe(options);
-    }
+    if (lockstep_ && !odom_ack_topic_.empty())
+      robot->odom_ack_sub = subscribeReports<nav_msgs::Odometry>(
+          nh, n + "/" + odom_ack_topic_, 50,
+          [raw](const nav_msgs::Odometry::ConstPtr& msg) { raw->odom_ack.onDone(msg->header.stamp.toSec()); });
     if (lockstep_ && !control_ack_topic_.empty()) {
       robot->control_ack.reset(new ControlAck(1.0 / control_rate_));
       ControlAck* ack = robot->control_ack.get();
-      auto options = ros::SubscribeOptions::create<nav_msgs::Odometry>(
-          n + "/" + control_ack_topic_, 50,
-          [ack](const nav_msgs::Odometry::ConstPtr& msg) {
+      robot->control_ack_sub = subscribeReports<nav_msgs::Odometry>(
+          nh, n + "/" + control_ack_topic_, 50, [ack](const nav_msgs::Odometry::ConstPtr& msg) {
             const auto& v = msg->twist.twist;
             ack->onTick(msg->header.stamp.toSec(), v.linear.x != 0.0 || v.angular.z != 0.0);
-          },
-          ros::VoidPtr(), &ack_queue_);
-      robot->control_ack_sub = nh.subscribe(options);
+          });
     }
     robots_.push_back(robot);
+  }
+
+  // Lockstep's reports are served on a thread of their own (ack_spinner_), so they come in
+  // while the simulation loop waits for them.
+  template <typename M>
+  ros::Subscriber subscribeReports(ros::NodeHandle& nh, const std::string& topic, uint32_t queue,
+                                   const boost::function<void(const typename M::ConstPtr&)>& callback) {
+    auto options = ros::SubscribeOptions::create<M>(topic, queue, callback, ros::VoidPtr(), &ack_queue_);
+    return nh.subscribe(options);
   }
 
   void onCmdVel(Robot& robot, const geometry_msgs::Twist& msg) {
@@ -616,9 +619,7 @@ class Simulator {
   static double awaitDone(StampAck& ack, double timeout) {
     std::unique_lock<std::mutex> lock(ack.mutex);
     if (ack.sent < 0.0) return 0.0;
-    const auto deadline = std::chrono::steady_clock::now() +
-                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                              std::chrono::duration<double>(timeout));
+    const auto deadline = std::chrono::steady_clock::now() + wallSeconds(timeout);
     const bool done = ack.reported.wait_until(lock, deadline, [&ack] { return ack.isDone(); });
     ack.sent = -1.0;
     if (!done) return -1.0;
@@ -630,9 +631,7 @@ class Simulator {
   // stopped the robot, for the zero twist to reach the base (through the fault injector).
   void awaitControlTick(Robot& robot, double now) {
     ControlAck& ack = *robot.control_ack;
-    const auto deadline = std::chrono::steady_clock::now() +
-                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                              std::chrono::duration<double>(control_ack_timeout_));
+    const auto deadline = std::chrono::steady_clock::now() + wallSeconds(control_ack_timeout_);
     std::unique_lock<std::mutex> lock(ack.mutex);
     if (!ack.reported.wait_until(lock, deadline, [&ack, now] { return !ack.ticks.tickDue(now); })) {
       ROS_WARN_THROTTLE(10.0, "rason_sim: no %s/%s for the control tick due at %.2f s within %.1f s "
