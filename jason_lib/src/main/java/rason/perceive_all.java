@@ -14,7 +14,7 @@ public class perceive_all extends DefaultInternalAction {
         RosAgArch arch = RosAgArch.of(ts);
         if (arch == null)
             throw new JasonException("rason.perceive_all needs the agent architecture rason.RosAgArch");
-        arch.perceiveOnly(null);
+        arch.perception().perceiveOnly(null);
         return true;
     }
 }

@@ -35,7 +35,7 @@ public class perceive_only extends OneArgumentAction {
         if (arch == null)
             throw new JasonException("rason.perceive_only needs the agent architecture rason.RosAgArch");
         try {
-            arch.perceiveOnly(SelectivePerception.parseSelection(entries));
+            arch.perception().perceiveOnly(SelectivePerception.parseSelection(entries));
         } catch (IllegalArgumentException e) {
             throw JasonException.createWrongArgument(this, e.getMessage());
         }

@@ -1,7 +1,5 @@
 package rason;
 
-import rason.bridge.Bridge;
-
 /**
  * {@code rason.ros_time_ms(T)}: T is ROS time in milliseconds, as the bridge last heard
  * it from its node: simulated time under {@code /use_sim_time}, else the wall clock since
@@ -13,7 +11,8 @@ import rason.bridge.Bridge;
 public class ros_time_ms extends ClockReading {
 
     @Override
-    double nowMillis() {
-        return Bridge.get().clock().now() / 1e6;
+    double nowMillis(jason.asSemantics.TransitionSystem ts) {
+        RosAgArch arch = RosAgArch.of(ts);
+        return arch == null ? 0 : arch.rosNanos() / 1e6;
     }
 }

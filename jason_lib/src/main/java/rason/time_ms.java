@@ -11,7 +11,7 @@ public class time_ms extends ClockReading {
 
     /** Milliseconds on the monotonic clock, rounded to the microsecond. */
     @Override
-    double nowMillis() {
-        return Math.rint(System.nanoTime() / 1e3) / 1e3;
+    double nowMillis(jason.asSemantics.TransitionSystem ts) {
+        return Math.rint(rason.core.Clock.WALL.nanos() / 1e3) / 1e3;
     }
 }

@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
 import jason.asSemantics.Unifier;
@@ -12,32 +11,43 @@ import jason.asSyntax.ASSyntax;
 import jason.asSyntax.NumberTerm;
 import jason.asSyntax.Term;
 import jason.asSyntax.VarTerm;
+import java.nio.file.Path;
+
+import org.junit.jupiter.api.extension.RegisterExtension;
+import org.junit.jupiter.api.io.TempDir;
+
+import jason.asSemantics.TransitionSystem;
 import rason.bridge.Bridge;
+import rason.bridge.RunningAgents;
 
 /** rason.ros_time_ms reads the ROS time the node pushed; rason.time_ms the monotonic clock. */
 class ClockReadingTest {
 
-    private final Bridge bridge = Bridge.get();
+    private final Bridge bridge = new Bridge();
+    @RegisterExtension
+    final RunningAgents agents = new RunningAgents(bridge);
 
-    @AfterEach
-    void detach() {
-        bridge.detach();
+    @TempDir
+    Path dir;
+
+    private static double read(ClockReading clock, TransitionSystem ts) throws Exception {
+        Unifier u = new Unifier();
+        VarTerm t = new VarTerm("T");
+        assertTrue((Boolean) clock.execute(ts, u, new Term[] { t }));
+        return ((NumberTerm) u.get(t)).solve();
     }
 
     private static double read(ClockReading clock) throws Exception {
-        Unifier u = new Unifier();
-        VarTerm t = new VarTerm("T");
-        assertTrue((Boolean) clock.execute(null, u, new Term[] { t }));
-        return ((NumberTerm) u.get(t)).solve();
+        return read(clock, null);
     }
 
     @Test
     void rosTimeIsTheTimeTheNodePushedInMilliseconds() throws Exception {
-        bridge.attach();
+        TransitionSystem ts = agents.start(dir, "reader", "ready.\n").getTS();
         bridge.tick(123_456_789_000L);
-        assertEquals(123456.789, read(new ros_time_ms()), 1e-9);
+        assertEquals(123456.789, read(new ros_time_ms(), ts), 1e-9);
         bridge.tick(123_500_000_000L);
-        assertEquals(123500.0, read(new ros_time_ms()), 1e-9);
+        assertEquals(123500.0, read(new ros_time_ms(), ts), 1e-9);
     }
 
     @Test
@@ -49,10 +59,10 @@ class ClockReadingTest {
 
     @Test
     void aBoundArgumentThatDiffersDoesNotUnify() throws Exception {
-        bridge.attach();
+        TransitionSystem ts = agents.start(dir, "reader", "ready.\n").getTS();
         bridge.tick(1_000_000_000L);
         Unifier u = new Unifier();
-        assertFalse((Boolean) new ros_time_ms().execute(null, u, new Term[] { ASSyntax.createNumber(5) }));
-        assertTrue((Boolean) new ros_time_ms().execute(null, u, new Term[] { ASSyntax.createNumber(1000) }));
+        assertFalse((Boolean) new ros_time_ms().execute(ts, u, new Term[] { ASSyntax.createNumber(5) }));
+        assertTrue((Boolean) new ros_time_ms().execute(ts, u, new Term[] { ASSyntax.createNumber(1000) }));
     }
 }

@@ -2,8 +2,8 @@ package rason.action;
 
 import java.util.Arrays;
 
-import rason.bridge.InputLimits;
-import rason.bridge.Protocol;
+import rason.core.InputLimits;
+import rason.core.Protocol;
 
 /**
  * A decomposer's event about one action, read from the fields of a

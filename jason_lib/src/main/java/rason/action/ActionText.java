@@ -7,6 +7,7 @@ import jason.asSyntax.StringTerm;
 import jason.asSyntax.Structure;
 import jason.asSyntax.Term;
 
+import rason.core.InputLimits;
 import rason.perception.Perceptions;
 
 /** How an action's terms cross to ROS as text, and how a result comes back as a failure reason. */
@@ -48,9 +49,9 @@ public final class ActionText {
      * literal without annotations as it is (so {@code -!g[no_progress]} matches),
      * anything else as {@code failure_reason("text")}.
      */
-    public static Literal reasonLiteral(String result) {
+    public static Literal reasonLiteral(String result, InputLimits limits) {
         try {
-            Literal l = Perceptions.parse(result);
+            Literal l = Perceptions.parse(result, limits);
             if (!l.hasAnnot())
                 return l;
         } catch (IllegalArgumentException e) {

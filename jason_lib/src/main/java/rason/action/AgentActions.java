@@ -5,7 +5,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.function.IntSupplier;
-import java.util.function.Supplier;
 import java.util.logging.Level;
 
 import jason.asSemantics.ActionExec;
@@ -14,16 +13,12 @@ import jason.asSemantics.Intention;
 import jason.asSyntax.Structure;
 import jason.asSyntax.Term;
 import jason.asSyntax.Trigger;
-import rason.bridge.Bridge;
-import rason.bridge.InputLimits;
-import rason.bridge.Outbound;
-import rason.bridge.Outbox;
-import rason.bridge.Protocol;
+import rason.core.Protocol;
 import rason.mind.AgentMind;
 
 /**
  * One agent's actions from {@code act()} to the robot and back: each is
- * registered in an {@link ActionTable} and queued in the {@link Outbox}; its
+ * registered in an {@link ActionTable} and handed to the {@link ActionSink}; its
  * feedback, timeout, the loss of its decomposer or the node stopping settles
  * it; and whenever the agent stops waiting for it for another reason (Jason's
  * take-back constructs, seen through {@link #listener()} and Jason's own
@@ -32,28 +27,29 @@ import rason.mind.AgentMind;
 public final class AgentActions {
 
     private final ActionTable<ActionExec> table;
-    private final Outbox outbox;
-    private final Supplier<String> agent;
+    private final ActionSink sink;
+    private final String agent;
     private final Runnable wake;
+    private final ActionPort port;
 
     /**
      * @param ids  action ids, unique in the process
-     * @param agent the agent's name (known once Jason has created it)
      * @param wake wakes the agent so it settles what ended in its next cycle
+     * @param port where the agent's log lines go
      */
-    public AgentActions(IntSupplier ids, Outbox outbox, Supplier<String> agent, Runnable wake) {
+    AgentActions(IntSupplier ids, ActionSink sink, String agent, Runnable wake, ActionPort port) {
         this.table = new ActionTable<>(ids);
-        this.outbox = outbox;
+        this.sink = sink;
         this.agent = agent;
         this.wake = wake;
+        this.port = port;
     }
 
     /** Registers the action and queues it for the node (agent's thread). */
     public void start(ActionExec action, long nowNanos) {
         Structure term = action.getActionTerm();
         int id = table.start(action, nowNanos); // before queueing: feedback may come back at once
-        Outbound.Action out = new Outbound.Action(agent.get(), id, term.getFunctor(), ActionText.parametersOf(term));
-        if (!outbox.offer(out) && table.feedback(id, Protocol.BRIDGE_ERROR) == ActionTable.FeedbackOutcome.SETTLED) {
+        if (!sink.action(agent, id, term.getFunctor(), ActionText.parametersOf(term)) && table.feedback(id, Protocol.BRIDGE_ERROR) == ActionTable.FeedbackOutcome.SETTLED) {
             log(Level.SEVERE, "could not publish " + term + ": the bridge is not running");
             wake.run();
         }
@@ -73,8 +69,7 @@ public final class AgentActions {
             log(Level.FINE, "feedback '" + result + "' for action id " + actionId + " after it was taken back: ignored");
             return false;
         default:
-            Bridge.get().logLimited(Bridge.IGNORED_EVENT, Level.INFO, "[" + agent.get() + "] ignored feedback '"
-                    + InputLimits.abbreviate(result, 200) + "' for action id " + actionId + ": no such action pending");
+            port.ignoredFeedback(agent, result, actionId);
             return false;
         }
     }
@@ -95,20 +90,18 @@ public final class AgentActions {
         }
     }
 
-    /**
-     * Periodic, with the ROS time: actions older than the timeout fail and are cancelled.
-     *
-     * @return true if any timed out
-     */
-    public boolean expire(long nowNanos, long timeoutNanos) {
+    /** Periodic, with the ROS time: actions older than the timeout fail, are cancelled, and the agent wakes. */
+    void expire(long nowNanos, long timeoutNanos) {
         List<ActionTable.Taken<ActionExec>> late = table.expire(nowNanos, timeoutNanos, Protocol.TIMEOUT);
         cancel(late, Protocol.TIMEOUT);
-        return !late.isEmpty();
+        if (!late.isEmpty())
+            wake.run();
     }
 
     /** The node stops: pending actions fail with reason and the robot is told to stop them. */
-    public void failAll(String reason) {
+    void failAll(String reason) {
         cancel(table.failAll(reason), reason);
+        wake.run();
     }
 
     /** The actions that ended since the last call (agent's thread). */
@@ -198,7 +191,7 @@ public final class AgentActions {
     /** Tells the robot to stop these actions (a cancel follows each on jason/action). */
     private void cancel(List<ActionTable.Taken<ActionExec>> taken, String reason) {
         for (ActionTable.Taken<ActionExec> t : taken)
-            outbox.offer(new Outbound.Cancel(agent.get(), t.id(), reason));
+            sink.cancel(agent, t.id(), reason);
     }
 
     private static String describe(List<ActionTable.Taken<ActionExec>> taken) {
@@ -209,6 +202,6 @@ public final class AgentActions {
     }
 
     private void log(Level level, String text) {
-        Bridge.log(level, "[" + agent.get() + "] " + text);
+        port.log(level, agent, text);
     }
 }

@@ -14,6 +14,8 @@ import java.util.concurrent.TimeUnit;
 
 import jason.asSemantics.Agent;
 
+import rason.core.RosClock;
+
 /**
  * Jason's scheduler (the one behind {@code .wait(ms)}, {@code .wait(Event, ms)},
  * {@code .at}, plan deadlines and the timeouts of {@code .send} asks) on ROS
@@ -77,7 +79,7 @@ public final class RosTimeScheduler extends ScheduledThreadPoolExecutor {
         onRosTime = on;
         if (on)
             return;
-        long now = clock.now();
+        long now = clock.nanos();
         synchronized (waiting) {
             for (RosTimeTask<?> t; (t = waiting.poll()) != null;) {
                 if (!t.isCancelled())
@@ -157,7 +159,7 @@ public final class RosTimeScheduler extends ScheduledThreadPoolExecutor {
             task.sequence = sequence++;
             waiting.add(task);
         }
-        runDue(clock.now()); // a delay of 0 (or less) is due at once
+        runDue(clock.nanos()); // a delay of 0 (or less) is due at once
         return task;
     }
 
@@ -177,13 +179,13 @@ public final class RosTimeScheduler extends ScheduledThreadPoolExecutor {
 
         RosTimeTask(Runnable command, V result, long delayNanos, long periodNanos) {
             super(command, result);
-            this.due = clock.now() + delayNanos;
+            this.due = clock.nanos() + delayNanos;
             this.period = periodNanos;
         }
 
         RosTimeTask(Callable<V> callable, long delayNanos) {
             super(callable);
-            this.due = clock.now() + delayNanos;
+            this.due = clock.nanos() + delayNanos;
             this.period = 0;
         }
 
@@ -202,7 +204,7 @@ public final class RosTimeScheduler extends ScheduledThreadPoolExecutor {
                     if (!isCancelled() && !isShutdown())
                         waiting.add(this);
                 }
-                runDue(clock.now());
+                runDue(clock.nanos());
             }
         }
 
@@ -217,7 +219,7 @@ public final class RosTimeScheduler extends ScheduledThreadPoolExecutor {
 
         @Override
         public long getDelay(TimeUnit unit) {
-            return unit.convert(due - clock.now(), TimeUnit.NANOSECONDS);
+            return unit.convert(due - clock.nanos(), TimeUnit.NANOSECONDS);
         }
 
         @Override

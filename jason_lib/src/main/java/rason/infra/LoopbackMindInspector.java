@@ -7,11 +7,12 @@ import java.net.InetSocketAddress;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.logging.Level;
+import java.util.logging.Logger;
 
 import com.sun.net.httpserver.HttpServer;
 
+import jason.architecture.MindInspectorWeb;
 import jason.architecture.MindInspectorWebImpl;
-import rason.bridge.Bridge;
 
 /**
  * Jason's web mind inspector, served on the loopback address on a port the system
@@ -22,7 +23,7 @@ import rason.bridge.Bridge;
  */
 public class LoopbackMindInspector extends MindInspectorWebImpl {
 
-    private static volatile String servedAt = ""; // the URL once the server runs
+    private static final Logger logger = Logger.getLogger("rason.infra");
     private ExecutorService pool;
 
     @Override
@@ -39,7 +40,8 @@ public class LoopbackMindInspector extends MindInspectorWebImpl {
             field.setAccessible(true);
             field.set(this, server);
             httpServerPort = server.getAddress().getPort();
-            httpServerURL = "http://127.0.0.1:" + httpServerPort;
+            String url = "http://127.0.0.1:" + httpServerPort;
+            httpServerURL = url; // Jason's pages are registered under it
             for (String page : new String[] { "registerRootBrowserView", "registerAgentsBrowserView" }) {
                 Method m = MindInspectorWebImpl.class.getDeclaredMethod(page);
                 m.setAccessible(true);
@@ -49,18 +51,18 @@ public class LoopbackMindInspector extends MindInspectorWebImpl {
             agView.setAccessible(true);
             agView.invoke(this, "no_ag");
             server.start();
-            servedAt = httpServerURL;
-            Bridge.log(Level.INFO, "Jason's mind inspector is on " + httpServerURL + " (loopback only)");
-            return httpServerURL;
+            logger.info("Jason's mind inspector is on " + url + " (loopback only)");
+            return url;
         } catch (Exception e) {
-            Bridge.log(Level.SEVERE, "Jason's mind inspector could not start: " + e);
+            httpServerURL = null;
+            logger.log(Level.SEVERE, "Jason's mind inspector could not start: " + e);
             return null;
         }
     }
 
     @Override
     public void stoptHttpServer() {
-        servedAt = "";
+        httpServerURL = null;
         super.stoptHttpServer();
         if (pool != null)
             pool.shutdownNow();
@@ -68,6 +70,7 @@ public class LoopbackMindInspector extends MindInspectorWebImpl {
 
     /** Where the inspector of this process is served, "" when no agent asked for it. */
     public static String url() {
-        return isRunning() ? servedAt : "";
+        String url = MindInspectorWeb.getURL(); // Jason keeps the one inspector of the process
+        return url == null ? "" : url;
     }
 }

@@ -24,9 +24,9 @@ import jason.mas2j.AgentParameters;
 import jason.runtime.RuntimeServicesFactory;
 import jason.util.Config;
 
+import rason.MindAgArch;
 import rason.RosAgArch;
-import rason.bridge.Bridge;
-import rason.bridge.Outbound;
+import rason.core.Clock;
 import rason.messaging.Fleet;
 import rason.messaging.TrustPolicy;
 import rason.perception.PerceptionManagers;
@@ -41,13 +41,20 @@ import rason.perception.PerceptionManagers;
 public class RasonLocalMAS extends RunLocalMAS {
 
     public static final String ARCH_CLASS = RosAgArch.class.getName();
+    /** jason/mind's architecture, just before {@link #ARCH_CLASS} in every agent's chain. */
+    public static final String MIND_ARCH_CLASS = MindAgArch.class.getName();
 
+    private final MasHost host;
     private String agentPrefix = "";
 
-    public RasonLocalMAS() {
+    /** A MAS whose agents run in host (the one RuntimeServices of the process is this MAS's). */
+    public RasonLocalMAS(MasHost host) {
         super();
-        RasonRuntimeServices services = new RasonRuntimeServices(this);
-        services.registerDefaultAgArch(ARCH_CLASS); // agents made later with .create_agent too
+        this.host = host;
+        RasonRuntimeServices services = new RasonRuntimeServices(this, host);
+        // agents made later with .create_agent too, in this order
+        services.registerDefaultAgArch(MIND_ARCH_CLASS);
+        services.registerDefaultAgArch(ARCH_CLASS);
         RuntimeServicesFactory.set(services);
     }
 
@@ -63,7 +70,7 @@ public class RasonLocalMAS extends RunLocalMAS {
             throw new JasonException("agent prefix '" + prefix + "' must start with a lower-case letter and hold only"
                     + " letters, digits and _ (agent names are Jason atoms), e.g. robot1_");
         agentPrefix = p;
-        Bridge.get().registry().setAgentPrefix(p);
+        host.fleet().setAgentPrefix(p);
     }
 
     /**
@@ -109,6 +116,8 @@ public class RasonLocalMAS extends RunLocalMAS {
                 throw new JasonException("agent '" + ap.name + "': source file not found: "
                         + (tried.size() == 1 ? tried.get(0) : "tried " + tried));
             ap.setSource(asl.getPath());
+            if (!ap.getAgArchClasses().contains(MIND_ARCH_CLASS))
+                ap.addArchClass(MIND_ARCH_CLASS);
             if (!ap.getAgArchClasses().contains(ARCH_CLASS))
                 ap.addArchClass(ARCH_CLASS);
             checkClasses(ap);
@@ -117,7 +126,7 @@ public class RasonLocalMAS extends RunLocalMAS {
                 PerceptionManagers.forAgent(unquote(ap.getOption(PerceptionManagers.MANAGER_OPTION)),
                         unquote(ap.getOption(PerceptionManagers.RATE_OPTION)),
                         unquote(ap.getOption(PerceptionManagers.PERCEIVE_OPTION)),
-                        Bridge.get().defaultPerceptionManager());
+                        host.perception().defaultManager());
             } catch (IllegalArgumentException e) {
                 throw new JasonException("agent '" + ap.name + "': " + e.getMessage());
             }
@@ -216,7 +225,7 @@ public class RasonLocalMAS extends RunLocalMAS {
      *
      * @throws JasonException for an unknown group or a rule that does not parse
      */
-    private static void readTrustOptions(AgentParameters ap) throws JasonException {
+    private void readTrustOptions(AgentParameters ap) throws JasonException {
         Map<String, String> options = ap.getOptions();
         if (options == null)
             return;
@@ -227,7 +236,7 @@ public class RasonLocalMAS extends RunLocalMAS {
                 TrustPolicy.Group group = TrustPolicy.Group.byKey(o.getKey().substring(TrustPolicy.OPTION_PREFIX.length()));
                 TrustPolicy.Rule rule = TrustPolicy.Rule.parse(o.getValue());
                 for (String name : instanceNames(ap))
-                    Bridge.get().trust().setProgramRule(name, group, rule);
+                    host.fleet().trust().setProgramRule(name, group, rule);
             } catch (IllegalArgumentException e) {
                 throw new JasonException("agent '" + ap.name + "', option " + o.getKey() + ": " + e.getMessage());
             }
@@ -254,32 +263,32 @@ public class RasonLocalMAS extends RunLocalMAS {
 
     @Override
     public void dfRegister(String agName, String service) {
-        Bridge.get().dfRegister(agName, service);
+        host.fleet().dfRegister(agName, service);
     }
 
     @Override
     public void dfDeRegister(String agName, String service) {
-        Bridge.get().dfDeregister(agName, service);
+        host.fleet().dfDeregister(agName, service);
     }
 
     @Override
     public Collection<String> dfSearch(String service) {
-        return Bridge.get().dfSearch(service);
+        return host.fleet().directory().search(service);
     }
 
     @Override
     public void dfSubscribe(String agName, String service) {
-        Bridge.get().dfSubscribe(agName, service);
+        host.fleet().directory().subscribe(agName, service);
     }
 
     @Override
     public Map<String, Set<String>> getDF() {
-        return Bridge.get().fleet().directory().byAgent();
+        return host.fleet().directory().byAgent();
     }
 
     @Override
     public LocalAgArch delAg(String agName) {
-        Bridge.get().dfAgentGone(agName);
+        host.fleet().dfAgentGone(agName);
         return super.delAg(agName);
     }
 
@@ -288,15 +297,15 @@ public class RasonLocalMAS extends RunLocalMAS {
         Logger root = Logger.getLogger("");
         for (Handler h : root.getHandlers())
             root.removeHandler(h);
-        root.addHandler(new RosLogHandler());
+        root.addHandler(new RosLogHandler(host.log(), host.fleet()::hosts));
         root.setLevel(Level.INFO);
     }
 
     /** .stopMAS: ask the rospy node to shut down (which stops the agents) instead of System.exit. */
     @Override
     public void finish(int deadline, boolean stopJVM, int exitValue) {
-        if (!Bridge.get().outbox().offer(new Outbound.Stop(exitValue)))
-            Bridge.log(Level.WARNING, ".stopMAS ignored: no rason_mas node runs this MAS");
+        if (!host.requestStop(exitValue))
+            Logger.getLogger("rason.infra").warning(".stopMAS ignored: no rason_mas node runs this MAS");
     }
 
     /**
@@ -315,13 +324,13 @@ public class RasonLocalMAS extends RunLocalMAS {
             }
             delAg(ag.getAgName());
         }
-        long deadline = System.currentTimeMillis() + timeoutMillis;
+        long deadline = Clock.WALL.nanos() / 1_000_000 + timeoutMillis;
         boolean allEnded = true;
         for (LocalAgArch ag : all) {
             Thread t = ag.getThread();
             if (t == null)
                 continue;
-            t.join(Math.max(1, deadline - System.currentTimeMillis()));
+            t.join(Math.max(1, deadline - Clock.WALL.nanos() / 1_000_000));
             allEnded &= !t.isAlive();
         }
         jason.architecture.MindInspectorWeb.stop(); // its port closes with the agents

@@ -12,7 +12,6 @@ import jason.infra.local.LocalRuntimeServices;
 import jason.mas2j.ClassParameters;
 import jason.runtime.Settings;
 
-import rason.bridge.Bridge;
 
 /**
  * Jason's local runtime services, with agents of other rason_mas processes in
@@ -21,19 +20,28 @@ import rason.bridge.Bridge;
  * project agents are named, with its ~agent_prefix), and {@code .kill_agent}
  * of an agent of another robot fails saying so instead of failing silently.
  */
-public class RasonRuntimeServices extends LocalRuntimeServices {
+public class RasonRuntimeServices extends LocalRuntimeServices implements rason.AgentHost.Provider {
 
     /** error(...) of a .kill_agent whose agent runs on another robot, or nowhere. */
     public static final String KILL_REMOTE = "remote_agent";
     public static final String KILL_UNKNOWN = "agent_not_found";
 
-    public RasonRuntimeServices(BaseLocalMAS masRunner) {
+    private final MasHost host;
+
+    public RasonRuntimeServices(BaseLocalMAS masRunner, MasHost host) {
         super(masRunner);
+        this.host = host;
+    }
+
+    /** Where the agents these services serve find their ports. */
+    @Override
+    public MasHost agentHost() {
+        return host;
     }
 
     @Override
     public Collection<String> getAgentsNames() {
-        return Bridge.get().allNames();
+        return host.fleet().allNames();
     }
 
     @Override
@@ -45,7 +53,7 @@ public class RasonRuntimeServices extends LocalRuntimeServices {
      * .create_agent: the agent is named like the project's agents (prefix+name), its
      * source is found as an include is (the creator's directory, the project's, its
      * source paths; never the working directory), and it is announced to the other
-     * robots at once (see {@link Bridge#register}).
+     * robots at once.
      *
      * @throws JasonException if the source is found nowhere (the message lists the paths tried)
      */
@@ -63,7 +71,7 @@ public class RasonRuntimeServices extends LocalRuntimeServices {
                         + "' not found; tried " + tried, ASSyntax.createAtom("source_not_found"));
             source = found.getPath();
         }
-        return super.createAgent(freeName(Bridge.get().registry().prefixed(agName)), source, agClass, archClasses,
+        return super.createAgent(freeName(host.fleet().prefixed(agName)), source, agClass, archClasses,
                 bbPars, stts, father);
     }
 
@@ -73,7 +81,7 @@ public class RasonRuntimeServices extends LocalRuntimeServices {
      * with another robot is logged, see the naming rule).
      */
     private String freeName(String baseName) {
-        Collection<String> taken = Bridge.get().allNames();
+        Collection<String> taken = host.fleet().allNames();
         String name = baseName;
         for (int n = 1; taken.contains(name) || masRunner.getAg(name) != null; n++)
             name = baseName + n;
@@ -88,14 +96,14 @@ public class RasonRuntimeServices extends LocalRuntimeServices {
      */
     @Override
     public boolean killAgent(String agName, String byAg, int deadline) {
-        String local = Bridge.get().registry().localNameFor(agName);
+        String local = host.fleet().localNameFor(agName);
         if (local != null)
             return super.killAgent(local, byAg, deadline);
-        String mas = Bridge.get().fleet().sendableMasOf(agName);
+        String mas = host.fleet().fleet().sendableMasOf(agName);
         JasonException why = mas != null
                 ? new JasonException("cannot kill agent " + agName + ": it runs on " + mas
                         + ", and .kill_agent stops agents of this robot only", ASSyntax.createAtom(KILL_REMOTE))
-                : new JasonException("cannot kill agent " + agName + ": " + Bridge.get().fleet().whyUnreachable(agName),
+                : new JasonException("cannot kill agent " + agName + ": " + host.fleet().fleet().whyUnreachable(agName),
                         ASSyntax.createAtom(KILL_UNKNOWN));
         // RuntimeServices.killAgent declares no exception; Jason fails the intention with the
         // error annotations of a JasonException thrown from an internal action, so it goes through

@@ -9,7 +9,10 @@ import java.util.logging.Logger;
 
 import jason.asSyntax.Term;
 
-import rason.bridge.InputLimits;
+import rason.core.Clock;
+import rason.core.InputLimits;
+import rason.core.RateLimitedLog;
+import rason.core.WarnOnce;
 
 /**
  * This process among the other rason_mas processes of the fleet (thesis
@@ -51,31 +54,35 @@ public final class Fleet {
     private final WarnOnce warned;
     private final RateLimitedLog limited;
     private final FleetAuth auth;
+    private final InputLimits limits;
+    private final Clock wall;
     private final FleetDirectory directory;
     private volatile String masId = "";
     private volatile long presenceTimeoutNanos = 2_000_000_000L;
     private volatile long incarnation = 0;
     private volatile boolean stopping = false;
 
+    /** With the default input limits, on the wall clock. */
     public Fleet(Logger logger, Listener listener) {
-        this(logger, listener, new RateLimitedLog(logger));
-    }
-
-    /** @param limited where dropped messages are logged (kind "dropped message"), at most a few lines per period */
-    public Fleet(Logger logger, Listener listener, RateLimitedLog limited) {
-        this(logger, listener, limited, new FleetAuth());
+        this(logger, listener, new RateLimitedLog(logger), new FleetAuth(), new InputLimits(), Clock.WALL);
     }
 
     /**
+     * @param limited where dropped messages are logged (kind "dropped message"), at most a few lines per period
      * @param auth signs our messages and presence and checks those of others
      *             (required by default: configure its keys, or turn it off)
+     * @param limits the bounds on incoming content
+     * @param wall measures silences and stamps log periods
      */
-    public Fleet(Logger logger, Listener listener, RateLimitedLog limited, FleetAuth auth) {
+    public Fleet(Logger logger, Listener listener, RateLimitedLog limited, FleetAuth auth, InputLimits limits,
+            Clock wall) {
         this.logger = logger;
         this.listener = listener;
         this.warned = new WarnOnce(logger);
         this.limited = limited;
         this.auth = auth;
+        this.limits = limits;
+        this.wall = wall;
         // never called under the presence lock: the directory asks the table who owns a name
         this.directory = new FleetDirectory(this::sendableMasOf, listener::providersChanged);
     }
@@ -149,12 +156,12 @@ public final class Fleet {
         FleetAuth.Refusal refused = auth.verifyPresence(mas, Arrays.asList(names), Arrays.asList(dfAgents),
                 Arrays.asList(dfServices), period, leaving, signed);
         if (refused == null)
-            refused = auth.admit(FleetAuth.Kind.PRESENCE, mas, signed, System.nanoTime(),
+            refused = auth.admit(FleetAuth.Kind.PRESENCE, mas, signed, wall.nanos(),
                     () -> publishedBy(mas, publisher));
         if (refused != null) {
             limited.warn(DROPPED_PRESENCE + " (" + refused.problem().word + ")", "dropped presence of "
                     + InputLimits.abbreviate(mas, 100) + (leaving ? " (leaving)" : " announcing "
-                    + InputLimits.abbreviate(Arrays.toString(names), 200)) + ": " + refused.text(), System.nanoTime());
+                    + InputLimits.abbreviate(Arrays.toString(names), 200)) + ": " + refused.text(), wall.nanos());
             return;
         }
         List<String> valid = new ArrayList<>(names.length);
@@ -167,13 +174,13 @@ public final class Fleet {
         }
         PresenceTable.Changes c;
         synchronized (presence) {
-            c = presence.announced(mas, signed.incarnation(), valid, leaving, System.nanoTime());
+            c = presence.announced(mas, signed.incarnation(), valid, leaving, wall.nanos());
         }
         apply(c);
         if (!leaving && !c.stale)
             directory.remote(mas, FleetDirectory.valid(valid, dfAgents, dfServices, (entry, why) -> limited.warn(
                     IGNORED_REGISTRATION, "ignored directory registration '" + InputLimits.abbreviate(entry, 200)
-                            + "' announced by " + InputLimits.abbreviate(mas, 100) + ": " + why, System.nanoTime())));
+                            + "' announced by " + InputLimits.abbreviate(mas, 100) + ": " + why, wall.nanos())));
     }
 
     /** Kind of the rate-limited lines of directory registrations in a presence that are ignored. */
@@ -186,7 +193,7 @@ public final class Fleet {
     public void presenceTick(String[] linkedMas) {
         PresenceTable.Changes c;
         synchronized (presence) {
-            c = presence.tick(Arrays.asList(linkedMas), System.nanoTime(), presenceTimeoutNanos);
+            c = presence.tick(Arrays.asList(linkedMas), wall.nanos(), presenceTimeoutNanos);
         }
         apply(c);
     }
@@ -232,11 +239,11 @@ public final class Fleet {
                 + (receiver.isEmpty() ? "everyone" : InputLimits.abbreviate(receiver, 100));
         FleetAuth.Refusal refused = auth.verify(m, signed);
         if (refused == null)
-            refused = auth.admit(FleetAuth.Kind.MESSAGE, senderMas, signed, System.nanoTime(),
+            refused = auth.admit(FleetAuth.Kind.MESSAGE, senderMas, signed, wall.nanos(),
                     () -> forgedMessage(m, signed, publisher));
         if (refused != null) {
             limited.warn(DROPPED_MESSAGE + " (" + refused.problem().word + ")",
-                    "dropped message " + what + ": " + refused.text(), System.nanoTime());
+                    "dropped message " + what + ": " + refused.text(), wall.nanos());
             return null;
         }
         if (senderMas.isEmpty() || !sender.matches(NAME_PATTERN)) {
@@ -250,14 +257,14 @@ public final class Fleet {
         }
         Term term;
         try {
-            term = Messages.parseContent(m.content());
+            term = Messages.parseContent(m.content(), limits);
         } catch (IllegalArgumentException e) {
             dropped("dropped message " + what + ": " + e.getMessage());
             return null;
         }
         PresenceTable.Changes c;
         synchronized (presence) {
-            c = presence.messageFrom(senderMas, sender, System.nanoTime());
+            c = presence.messageFrom(senderMas, sender, wall.nanos());
         }
         apply(c);
         if (hostsSender)
@@ -307,7 +314,7 @@ public final class Fleet {
     public static final String DROPPED_PRESENCE = "dropped presence";
 
     private void dropped(String line) {
-        limited.warn(DROPPED_MESSAGE, line, System.nanoTime());
+        limited.warn(DROPPED_MESSAGE, line, wall.nanos());
     }
 
     /** "/robot1" for "/robot1/rason_mas", "" for "/rason_mas". */

@@ -18,7 +18,7 @@ import java.util.function.Supplier;
 import javax.crypto.Mac;
 import javax.crypto.spec.SecretKeySpec;
 
-import rason.bridge.InputLimits;
+import rason.core.InputLimits;
 
 /**
  * Authentication of what rason_mas processes say to each other

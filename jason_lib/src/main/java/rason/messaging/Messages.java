@@ -14,7 +14,7 @@ import jason.asSyntax.StringTermImpl;
 import jason.asSyntax.Structure;
 import jason.asSyntax.Term;
 
-import rason.bridge.InputLimits;
+import rason.core.InputLimits;
 
 /** Jason messages as they cross between processes: content as Jason text, parsed once on arrival. */
 public final class Messages {
@@ -100,12 +100,12 @@ public final class Messages {
     }
 
     /**
-     * Parses received content within the bridge's limits ({@link InputLimits#current()}).
+     * Parses received content within the default limits (a fresh {@link InputLimits}).
      *
      * @throws IllegalArgumentException saying why it is not a Jason term
      */
     public static Term parseContent(String text) {
-        return parseContent(text, InputLimits.current());
+        return parseContent(text, new InputLimits());
     }
 
     /**

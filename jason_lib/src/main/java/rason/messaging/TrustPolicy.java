@@ -9,7 +9,7 @@ import java.util.Set;
 import java.util.TreeSet;
 import java.util.concurrent.ConcurrentHashMap;
 
-import rason.bridge.InputLimits;
+import rason.core.InputLimits;
 
 /**
  * Which agents of other processes may send what to the agents hosted here.

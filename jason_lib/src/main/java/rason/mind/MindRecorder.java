@@ -39,6 +39,11 @@ public final class MindRecorder {
         requested = true;
     }
 
+    /** Whether a snapshot was asked for and not taken yet. */
+    public boolean isRequested() {
+        return requested;
+    }
+
     /**
      * A reasoning cycle ended (agent's thread): a snapshot when the period has passed
      * since the last one, or one was requested.

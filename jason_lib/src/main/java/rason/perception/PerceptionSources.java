@@ -8,7 +8,7 @@ import java.util.function.BiConsumer;
 
 import jason.asSyntax.Literal;
 
-import rason.bridge.InputLimits;
+import rason.core.InputLimits;
 
 /**
  * The perception sources the bridge remembers: at most {@link InputLimits#maxSources()}

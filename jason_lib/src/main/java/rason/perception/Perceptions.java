@@ -11,7 +11,7 @@ import jason.asSyntax.NumberTerm;
 import jason.asSyntax.Structure;
 import jason.asSyntax.Term;
 
-import rason.bridge.InputLimits;
+import rason.core.InputLimits;
 
 /** Parses the text of one perception into a Jason literal, refusing what cannot be a percept. */
 public final class Perceptions {
@@ -28,12 +28,12 @@ public final class Perceptions {
     }
 
     /**
-     * Parses within the bridge's limits ({@link InputLimits#current()}).
+     * Parses within the default limits (a fresh {@link InputLimits}).
      *
      * @throws IllegalArgumentException with a message saying what is wrong
      */
     public static Literal parse(String text) {
-        return parse(text, InputLimits.current());
+        return parse(text, new InputLimits());
     }
 
     /**

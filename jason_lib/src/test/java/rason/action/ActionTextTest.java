@@ -41,6 +41,6 @@ class ActionTextTest {
             "p[a]           | failure_reason(\"p[a]\")",
     })
     void failureReasonsBecomeAnnotations(String result, String literal) {
-        assertEquals(literal, ActionText.reasonLiteral(result).toString());
+        assertEquals(literal, ActionText.reasonLiteral(result, new rason.core.InputLimits()).toString());
     }
 }

@@ -1,5 +1,6 @@
 package rason.bridge;
 
+import rason.core.Protocol;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -32,7 +33,7 @@ class AgentLifecycleTest {
     private static final String KEY = "test-lifecycle-key-0123456789abcdef0123456789abcdef";
     private static final String OTHER_MAS = "/robot8/rason_mas";
 
-    private final Bridge bridge = Bridge.get();
+    private final Bridge bridge = new Bridge();
     private OtherRobot otherRobot;
     private RasonLocalMAS mas;
 
@@ -47,7 +48,6 @@ class AgentLifecycleTest {
         if (mas != null)
             mas.stopAgents(5000);
         bridge.detach();
-        bridge.registry().setAgentPrefix("");
         while (bridge.outbox().poll() != null) {
             // nothing of this test reaches the next one
         }
@@ -56,12 +56,12 @@ class AgentLifecycleTest {
     /** robot8 hosts far_worker (and r1_helper, a name this robot's program would make). */
     private void announceOtherRobot(boolean leaving) {
         otherRobot.announce(new String[] { "far_worker", "r1_helper" }, leaving);
-        bridge.presenceTick(new String[] { OTHER_MAS });
+        bridge.fleet().presenceTick(new String[] { OTHER_MAS });
     }
 
     /** Runs boss (program) with helper.asl in lib/ (an aslSourcePath), prefix r1_, robot8 present. */
     private void start(String boss) throws Exception {
-        bridge.setMasId("/robot1/rason_mas");
+        bridge.fleet().setMasId("/robot1/rason_mas");
         otherRobot = new OtherRobot(bridge, OTHER_MAS, KEY);
         Files.createDirectories(dir.resolve("lib"));
         Files.writeString(dir.resolve("lib/helper.asl"), "!start. +!start <- .df_register(\"helping\"); +started.");
@@ -69,7 +69,7 @@ class AgentLifecycleTest {
         Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: boss; aslSourcePath: \"lib\"; }");
         bridge.attach();
         announceOtherRobot(false);
-        mas = new RasonLocalMAS();
+        mas = bridge.newMas();
         mas.setAgentPrefix("r1_");
         mas.load(dir.resolve("p.mas2j").toString());
         mas.create();
@@ -82,7 +82,7 @@ class AgentLifecycleTest {
         for (Outbound o = bridge.outbox().poll(); o != null; o = bridge.outbox().poll()) {
             items.add(o);
             if (o instanceof Outbound.Announce)
-                bridge.dfAnnounced(); // as the node does when it announces
+                bridge.rosChannel().announced(); // as the node does when it announces
         }
         return items;
     }
@@ -112,16 +112,16 @@ class AgentLifecycleTest {
         await("both helpers made", () -> believes("r1_boss", "made(_)") || believes("r1_boss", "failed(_)"));
         assertFalse(believes("r1_boss", "failed(_)"), () -> mas.getAg("r1_boss").getTS().getAg().getBB().toString());
         // r1_helper is robot8's: the first one is r1_helper1, the second (named by Jason after the variable) r1_helper2
-        await("both helpers run", () -> bridge.hosts("r1_helper1") && bridge.hosts("r1_helper2"));
+        await("both helpers run", () -> bridge.fleet().hosts("r1_helper1") && bridge.fleet().hosts("r1_helper2"));
         assertTrue(believes("r1_boss", "made(\"r1_helper2\")"));
-        assertFalse(bridge.hosts("r1_helper"));
+        assertFalse(bridge.fleet().hosts("r1_helper"));
         await("helper1 started", () -> mas.getAg("r1_helper1") != null && believes("r1_helper1", "started"));
         assertTrue(drainOutbox().stream().anyMatch(o -> o instanceof Outbound.Announce),
                 "the new agents are announced without waiting for the next period");
         List<String> announced = List.of(bridge.agentNames());
         assertTrue(announced.containsAll(List.of("r1_boss", "r1_helper1", "r1_helper2")), announced.toString());
-        assertTrue(bridge.allNames().containsAll(List.of("far_worker", "r1_helper", "r1_helper1")));
-        await("registered", () -> bridge.dfSearch("helping").equals(List.of("r1_helper1", "r1_helper2")));
+        assertTrue(bridge.fleet().allNames().containsAll(List.of("far_worker", "r1_helper", "r1_helper1")));
+        await("registered", () -> bridge.fleet().directory().search("helping").equals(List.of("r1_helper1", "r1_helper2")));
     }
 
     @Test
@@ -131,12 +131,12 @@ class AgentLifecycleTest {
                 +!start <- .create_agent(aide, "helper.asl"); .wait(".df_search(\\"helping\\", [_])"); +ready.
                 +!kill <- .kill_agent(aide); +killed.
                 """);
-        await("aide registered", () -> believes("r1_boss", "ready") || bridge.dfSearch("helping").size() == 1);
+        await("aide registered", () -> believes("r1_boss", "ready") || bridge.fleet().directory().search("helping").size() == 1);
         drainOutbox();
         mas.getAg("r1_boss").getTS().getC().addAchvGoal(ASSyntax.parseLiteral("kill"), null);
         mas.getAg("r1_boss").wakeUpSense();
         // the aide stops on its own thread and +killed is the boss's next step: either can come first
-        await("aide gone", () -> !bridge.hosts("r1_aide") && mas.getAg("r1_aide") == null);
+        await("aide gone", () -> !bridge.fleet().hosts("r1_aide") && mas.getAg("r1_aide") == null);
         await("the boss noted it", () -> believes("r1_boss", "killed"));
         List<Outbound> seen = new ArrayList<>();
         long deadline = System.currentTimeMillis() + RunningAgents.WAIT_MS;
@@ -145,8 +145,8 @@ class AgentLifecycleTest {
             Thread.sleep(5);
         }
         assertTrue(seen.stream().anyMatch(o -> o instanceof Outbound.Announce), "its departure is announced: " + seen);
-        assertFalse(bridge.allNames().contains("r1_aide"));
-        assertEquals(List.of(), bridge.dfSearch("helping"));
+        assertFalse(bridge.fleet().allNames().contains("r1_aide"));
+        assertEquals(List.of(), bridge.fleet().directory().search("helping"));
     }
 
     @Test
@@ -164,7 +164,7 @@ class AgentLifecycleTest {
         Literal unknown = belief("r1_boss", "failed(nobody_here, E, M)");
         assertEquals("agent_not_found", unknown.getTerm(1).toString());
         assertFalse(believes("r1_boss", "killed(_)"));
-        assertTrue(bridge.allNames().contains("far_worker"), "robot8's agent is untouched");
+        assertTrue(bridge.fleet().allNames().contains("far_worker"), "robot8's agent is untouched");
     }
 
     @Test
@@ -180,6 +180,6 @@ class AgentLifecycleTest {
         assertTrue(f.getTerm(1).toString().contains(dir.resolve("lib").toRealPath().resolve("ghost.asl").toString()),
                 f.toString());
         assertNotNull(mas.getAg("r1_boss"));
-        assertFalse(bridge.hosts("r1_ghost"));
+        assertFalse(bridge.fleet().hosts("r1_ghost"));
     }
 }

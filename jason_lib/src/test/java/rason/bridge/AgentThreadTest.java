@@ -1,5 +1,6 @@
 package rason.bridge;
 
+import rason.core.Protocol;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static rason.bridge.RunningAgents.await;
 import static rason.bridge.RunningAgents.believes;
@@ -25,9 +26,9 @@ class AgentThreadTest {
     private static final long SECOND = RunningAgents.SECOND;
     private static final long WAIT_MS = RunningAgents.WAIT_MS;
 
-    private final Bridge bridge = Bridge.get();
+    private final Bridge bridge = new Bridge();
     @RegisterExtension
-    final RunningAgents agents = new RunningAgents();
+    final RunningAgents agents = new RunningAgents(bridge);
 
     @TempDir
     Path dir;
@@ -60,7 +61,7 @@ class AgentThreadTest {
         // nobody took the action to ROS, yet the agent's other intention runs to its end
         await("the other intention ends", () -> believes(arch, "counted_all"));
         assertFalse(believes(arch, "moved"));
-        assertTrue(bridge.event("worker", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + a.actionId() }));
+        assertTrue(bridge.actions().event("worker", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + a.actionId() }));
         await("the action's intention resumes", () -> believes(arch, "moved"));
     }
 
@@ -68,7 +69,7 @@ class AgentThreadTest {
     void aFailureReasonFailsTheIntentionWithIt() throws Exception {
         RosAgArch arch = start("worker", WORKER);
         Outbound.Action a = nextAction();
-        bridge.event("worker", Protocol.ACTION_FEEDBACK, new String[] { "no_progress", "" + a.actionId() });
+        bridge.actions().event("worker", Protocol.ACTION_FEEDBACK, new String[] { "no_progress", "" + a.actionId() });
         await("-!work with no_progress", () -> believes(arch, "failed(no_progress)"));
     }
 
@@ -76,21 +77,21 @@ class AgentThreadTest {
     void badAndForeignEventsChangeNothing() throws Exception {
         RosAgArch arch = start("worker", WORKER);
         Outbound.Action a = nextAction();
-        assertFalse(bridge.event("someone_else", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + a.actionId() }));
-        assertFalse(bridge.event("worker", "status", new String[] { Protocol.OK, "" + a.actionId() }));
-        assertFalse(bridge.event("worker", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "2147483648" }));
-        assertFalse(bridge.event("worker", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + (a.actionId() + 1000) }));
+        assertFalse(bridge.actions().event("someone_else", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + a.actionId() }));
+        assertFalse(bridge.actions().event("worker", "status", new String[] { Protocol.OK, "" + a.actionId() }));
+        assertFalse(bridge.actions().event("worker", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "2147483648" }));
+        assertFalse(bridge.actions().event("worker", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + (a.actionId() + 1000) }));
         assertEquals(1, pending(arch));
-        assertTrue(bridge.event("worker", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + a.actionId() }));
+        assertTrue(bridge.actions().event("worker", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + a.actionId() }));
         await("the action's intention resumes", () -> believes(arch, "moved"));
-        assertFalse(bridge.event("worker", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + a.actionId() }),
+        assertFalse(bridge.actions().event("worker", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + a.actionId() }),
                 "late feedback is ignored");
     }
 
     @Test
     void timeoutFollowsThePushedRosClock() throws Exception {
         RosAgArch arch = start("worker", WORKER);
-        bridge.setActionTimeoutNanos(2 * SECOND);
+        bridge.actions().setTimeoutNanos(2 * SECOND);
         nextAction();
         bridge.tick(101 * SECOND);
         await("the other intention ends", () -> believes(arch, "counted_all"));
@@ -122,7 +123,7 @@ class AgentThreadTest {
     }
 
     private static int pending(RosAgArch arch) {
-        return arch.pendingActions();
+        return arch.actions().pendingCount();
     }
 
     private static void assertNull(Object o) {

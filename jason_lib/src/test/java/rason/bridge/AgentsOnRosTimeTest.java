@@ -31,9 +31,9 @@ class AgentsOnRosTimeTest {
             -!go[error(E)] <- +failed(E).
             """;
 
-    private final Bridge bridge = Bridge.get();
+    private final Bridge bridge = new Bridge();
     @RegisterExtension
-    final RunningAgents agents = new RunningAgents();
+    final RunningAgents agents = new RunningAgents(bridge);
 
     @TempDir
     Path dir;
@@ -73,7 +73,7 @@ class AgentsOnRosTimeTest {
     void aWaitForAnEventEndsWithTheEventBeforeItsRosTimeout() throws Exception {
         RosAgArch arch = start(WAITS_FOR_READY);
         await("the wait scheduled", () -> bridge.scheduler().waitingTasks() == 1);
-        bridge.perceive("test", new String[] { "ready" }, START);
+        bridge.perception().perceive("test", new String[] { "ready" }, START);
         await("ready seen", () -> believes(arch, "ready_seen"));
         bridge.clockAdvanced(START + 300 * MS); // the timer fires for a wait already over
         await("the timer gone", () -> bridge.scheduler().waitingTasks() == 0);

@@ -1,5 +1,6 @@
 package rason.bridge;
 
+import rason.core.InputLimits;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -17,7 +18,7 @@ import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 import rason.RosAgArch;
-import rason.messaging.RateLimitedLog;
+import rason.core.RateLimitedLog;
 
 /** Hostile perceptions through the bridge to a running agent. */
 class BoundedInputTest {
@@ -25,9 +26,9 @@ class BoundedInputTest {
     @TempDir
     Path dir;
 
+    private final Bridge bridge = new Bridge();
     @RegisterExtension
-    final RunningAgents agents = new RunningAgents();
-    private final Bridge bridge = Bridge.get();
+    final RunningAgents agents = new RunningAgents(bridge);
     private final Logger logger = Logger.getLogger("rason.bridge");
     private final List<String> lines = new ArrayList<>();
     private final Handler handler = new Handler() {
@@ -61,13 +62,13 @@ class BoundedInputTest {
 
         String[] tooMany = new String[1001];
         Arrays.fill(tooMany, "x(1)");
-        assertEquals(0, bridge.perceive("flood", tooMany, 100 * RunningAgents.SECOND));
+        assertEquals(0, bridge.perception().perceive("flood", tooMany, 100 * RunningAgents.SECOND));
         assertTrue(linesContaining("dropped perception message from source 'flood': 1001 literals, more than 1000") <= 1);
 
         String deep = "f(".repeat(100_000) + "a" + ")".repeat(100_000);
         String[] bad = new String[50];
         Arrays.fill(bad, deep);
-        assertEquals(0, bridge.perceive("deep", bad, 100 * RunningAgents.SECOND));
+        assertEquals(0, bridge.perception().perceive("deep", bad, 100 * RunningAgents.SECOND));
         assertTrue(linesContaining("from source 'deep'") <= RateLimitedLog.DEFAULT_LINES,
                 "at most a few lines per period: " + lines.size());
         assertTrue(lines.stream().allMatch(l -> l.length() < 1000), "no line echoes a whole literal");
@@ -75,8 +76,8 @@ class BoundedInputTest {
         String[] many = new String[1000];
         for (int i = 0; i < many.length; i++)
             many[i] = "x(" + i + ")";
-        assertEquals(1000, bridge.perceive("many", many, 100 * RunningAgents.SECOND));
-        assertEquals(1, bridge.perceive("s", new String[] { "go" }, 100 * RunningAgents.SECOND));
+        assertEquals(1000, bridge.perception().perceive("many", many, 100 * RunningAgents.SECOND));
+        assertEquals(1, bridge.perception().perceive("s", new String[] { "go" }, 100 * RunningAgents.SECOND));
         RunningAgents.await("the agent reacts to go", () -> RunningAgents.believes(arch, "went"));
         assertTrue(RunningAgents.believes(arch, "x(999)"));
     }
@@ -85,7 +86,7 @@ class BoundedInputTest {
     void aPerceptionCannotSayWhoSaidIt() throws Exception {
         RosAgArch arch = agents.start(dir, "bob", "+go <- +went.\n");
         logger.addHandler(handler);
-        assertEquals(2, bridge.perceive("synth", new String[] { "fake(1)[source(alice)]", "~fake(2)[source(self)]",
+        assertEquals(2, bridge.perception().perceive("synth", new String[] { "fake(1)[source(alice)]", "~fake(2)[source(self)]",
                 "real(1)[certainty(0.9)]", "go" }, 100 * RunningAgents.SECOND));
         RunningAgents.await("the agent reacts to go", () -> RunningAgents.believes(arch, "went"));
         assertTrue(RunningAgents.believes(arch, "real(1)[certainty(0.9),source(percept)]"));
@@ -98,22 +99,23 @@ class BoundedInputTest {
     void aFloodOfNewSourcesIsBoundedAndKnownSourcesGoOn() throws Exception {
         RosAgArch arch = agents.start(dir, "bob", "+go <- +went.\n");
         logger.addHandler(handler);
-        assertEquals(1, bridge.perceive("known", new String[] { "early(1)" }, 100 * RunningAgents.SECOND));
-        assertEquals(0, bridge.perceive("s".repeat(InputLimits.MAX_SOURCE_LENGTH + 1), new String[] { "x(1)" },
+        bridge.perception().setTtlNanos(2 * RunningAgents.SECOND);
+        assertEquals(1, bridge.perception().perceive("known", new String[] { "early(1)" }, 100 * RunningAgents.SECOND));
+        assertEquals(0, bridge.perception().perceive("s".repeat(InputLimits.MAX_SOURCE_LENGTH + 1), new String[] { "x(1)" },
                 100 * RunningAgents.SECOND));
         assertTrue(linesContaining("source name longer than 256 characters") == 1, lines.toString());
-        int max = InputLimits.current().maxSources();
+        int max = bridge.limits().maxSources();
         for (int i = 0; i < 3 * max; i++)
-            bridge.perceive("flood_" + i, new String[] { "s(" + i + ")" }, 100 * RunningAgents.SECOND);
-        assertEquals(max, bridge.perceptionSources());
+            bridge.perception().perceive("flood_" + i, new String[] { "s(" + i + ")" }, 100 * RunningAgents.SECOND);
+        assertEquals(max, bridge.perception().sources());
         assertTrue(linesContaining("more than " + max + " sources heard within ~perception_ttl and this one is new")
                 <= RateLimitedLog.DEFAULT_LINES);
-        assertEquals(2, bridge.perceive("known", new String[] { "early(1)", "go" }, 100 * RunningAgents.SECOND));
+        assertEquals(2, bridge.perception().perceive("known", new String[] { "early(1)", "go" }, 100 * RunningAgents.SECOND));
         RunningAgents.await("the agent reacts to go", () -> RunningAgents.believes(arch, "went"));
         assertTrue(RunningAgents.believes(arch, "early(1)"));
         bridge.tick(103 * RunningAgents.SECOND); // all silent for longer than the TTL (2 s)
-        assertEquals(0, bridge.perceptionSources());
-        assertEquals(1, bridge.perceive("late", new String[] { "late(1)" }, 103 * RunningAgents.SECOND));
+        assertEquals(0, bridge.perception().sources());
+        assertEquals(1, bridge.perception().perceive("late", new String[] { "late(1)" }, 103 * RunningAgents.SECOND));
     }
 
     @Test
@@ -121,14 +123,14 @@ class BoundedInputTest {
         agents.start(dir, "bob", "+go <- +went.\n");
         logger.addHandler(handler);
         for (String id : new String[] { "2147483648", "-1", "0", "abc", "1e3", "9".repeat(100_000) }) {
-            assertTrue(!bridge.event("bob", "action_feedback", new String[] { "OK", id }));
-            assertTrue(!bridge.event("bob", "action_started", new String[] { id }, "/decomposer"));
+            assertTrue(!bridge.actions().event("bob", "action_feedback", new String[] { "OK", id }));
+            assertTrue(!bridge.actions().event("bob", "action_started", new String[] { id }, "/decomposer"));
         }
         assertTrue(linesContaining("action id 2147483648 outside 1..2147483647") == 2, lines.toString());
         assertTrue(linesContaining("non-integer action id '1e3'") == 2, lines.toString());
         String huge = "n".repeat(1 << 20);
         for (int i = 0; i < 20; i++)
-            assertTrue(!bridge.event(huge + i, "action_feedback", new String[] { "OK", "1" }));
+            assertTrue(!bridge.actions().event(huge + i, "action_feedback", new String[] { "OK", "1" }));
         assertTrue(lines.stream().allMatch(l -> l.length() < 1000), "no line echoes a whole name or id");
     }
 }

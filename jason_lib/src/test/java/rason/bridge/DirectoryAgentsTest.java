@@ -1,5 +1,6 @@
 package rason.bridge;
 
+import rason.core.Protocol;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -30,7 +31,7 @@ class DirectoryAgentsTest {
     private static final String KEY = "test-directory-key-0123456789abcdef0123456789abcdef";
     private static final String OTHER_MAS = "/robot7/rason_mas";
 
-    private final Bridge bridge = Bridge.get();
+    private final Bridge bridge = new Bridge();
     private OtherRobot otherRobot;
     private RasonLocalMAS mas;
 
@@ -66,7 +67,7 @@ class DirectoryAgentsTest {
 
     @Test
     void theFleetsRegistrationsReachSearchAndSubscribersWithoutADfAgent() throws Exception {
-        bridge.setMasId("/robot6/rason_mas");
+        bridge.fleet().setMasId("/robot6/rason_mas");
         otherRobot = new OtherRobot(bridge, OTHER_MAS, KEY);
         Files.writeString(dir.resolve("painter.asl"), "!start. +!start <- .df_register(\"paint_svc\").");
         Files.writeString(dir.resolve("boss.asl"), """
@@ -77,20 +78,20 @@ class DirectoryAgentsTest {
                 """);
         Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: painter; boss; }");
         bridge.attach();
-        mas = new RasonLocalMAS();
+        mas = bridge.newMas();
         mas.load(dir.resolve("p.mas2j").toString());
         mas.create();
         mas.start();
 
         await("boss hears of painter", () -> believes("boss", "provider(painter, \"paint_svc\")[source(df)]"));
         await("the registration is announced", () -> bridge.outbox().poll() instanceof Outbound.Announce);
-        assertArrayEquals(new String[] { "painter" }, bridge.dfAnnounced().agents());
-        assertArrayEquals(new String[] { "paint_svc" }, bridge.dfAnnounced().services());
+        assertArrayEquals(new String[] { "painter" }, bridge.rosChannel().announced().agents());
+        assertArrayEquals(new String[] { "paint_svc" }, bridge.rosChannel().announced().services());
         List<String> hosted = List.of(bridge.agentNames());
         assertTrue(hosted.containsAll(List.of("boss", "painter")), hosted.toString());
-        assertFalse(hosted.contains(Bridge.DF_NAME), "no df among our agents: " + hosted);
-        assertNull(mas.getAg(Bridge.DF_NAME), "Jason's df agent was never made");
-        assertFalse(bridge.allNames().contains(Bridge.DF_NAME));
+        assertFalse(hosted.contains(rason.messaging.FleetPort.DF_NAME), "no df among our agents: " + hosted);
+        assertNull(mas.getAg(rason.messaging.FleetPort.DF_NAME), "Jason's df agent was never made");
+        assertFalse(bridge.fleet().allNames().contains(rason.messaging.FleetPort.DF_NAME));
 
         announceOtherRobot(false, new String[] { "far_painter" }, new String[] { "paint_svc" });
         await("boss searches after hearing of far_painter", () -> believes("boss", "found([far_painter, painter])"));
@@ -99,6 +100,6 @@ class DirectoryAgentsTest {
         await("far_painter is untold", () -> believes("boss", "lost(far_painter, \"paint_svc\")"));
         assertFalse(believes("boss", "provider(far_painter, \"paint_svc\")"));
         assertTrue(believes("boss", "provider(painter, \"paint_svc\")[source(df)]"));
-        assertTrue(bridge.dfSearch("paint_svc").equals(List.of("painter")));
+        assertTrue(bridge.fleet().directory().search("paint_svc").equals(List.of("painter")));
     }
 }

@@ -21,7 +21,7 @@ final class OtherRobot {
     OtherRobot(Bridge bridge, String masId, String key) {
         this.bridge = bridge;
         this.masId = masId;
-        bridge.requireFleetKeyText(key, "test");
+        bridge.fleet().requireKeyText(key, "test");
         auth.require(FleetKeys.parse(key, "test"));
         auth.setIncarnation(System.currentTimeMillis() * 1_000_000L);
     }
@@ -30,7 +30,7 @@ final class OtherRobot {
     void announce(String[] names, String[] dfAgents, String[] dfServices, boolean leaving) {
         FleetAuth.Signed p = auth.signPresence(masId, List.of(names), List.of(dfAgents), List.of(dfServices), 0.5f,
                 leaving);
-        bridge.presenceAnnounced(masId, p.incarnation(), names, dfAgents, dfServices, 0.5f, leaving, p.sequence(),
+        bridge.fleet().presenceAnnounced(masId, p.incarnation(), names, dfAgents, dfServices, 0.5f, leaving, p.sequence(),
                 p.stamp(), p.keyId(), p.mac(), masId);
     }
 
@@ -44,7 +44,7 @@ final class OtherRobot {
         WireMessage m = new WireMessage(masId, sender, "", receiver, performative, content, "mid" + System.nanoTime(),
                 inReplyTo);
         FleetAuth.Signed s = auth.sign(m);
-        return bridge.deliverMessage(m.senderMas(), m.sender(), m.receiverMas(), m.receiver(), m.performative(),
+        return bridge.rosChannel().deliver(m.senderMas(), m.sender(), m.receiverMas(), m.receiver(), m.performative(),
                 m.content(), m.msgId(), m.inReplyTo(), s.incarnation(), s.sequence(), s.stamp(), s.keyId(), s.mac(),
                 masId);
     }

@@ -1,5 +1,6 @@
 package rason.bridge;
 
+import rason.core.Protocol;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static rason.bridge.RunningAgents.await;
 import static rason.bridge.RunningAgents.believes;
@@ -28,9 +29,9 @@ class PreemptionTest {
     private static final long SECOND = RunningAgents.SECOND;
     private static final long WAIT_MS = RunningAgents.WAIT_MS;
 
-    private final Bridge bridge = Bridge.get();
+    private final Bridge bridge = new Bridge();
     @RegisterExtension
-    final RunningAgents agents = new RunningAgents();
+    final RunningAgents agents = new RunningAgents(bridge);
 
     @TempDir
     Path dir;
@@ -54,11 +55,11 @@ class PreemptionTest {
     }
 
     private void perceive(String... literals) {
-        bridge.perceive("test", literals, 100 * SECOND);
+        bridge.perception().perceive("test", literals, 100 * SECOND);
     }
 
     private boolean feedback(int id, String result) {
-        return bridge.event("mover", Protocol.ACTION_FEEDBACK, new String[] { result, "" + id });
+        return bridge.actions().event("mover", Protocol.ACTION_FEEDBACK, new String[] { result, "" + id });
     }
 
     @ParameterizedTest
@@ -70,7 +71,7 @@ class PreemptionTest {
         assertEquals("move", move.action());
         perceive("stop");
         assertEquals(new Outbound.Cancel("mover", move.actionId(), Protocol.DROPPED), next(Outbound.Cancel.class));
-        assertEquals(0, arch.pendingActions());
+        assertEquals(0, arch.actions().pendingCount());
         if (takeBack.startsWith(".fail_goal"))
             await("-!go runs", () -> believes(arch, "go_failed"));
         // the decomposer's answer to the cancel, and any late one, change nothing
@@ -100,14 +101,14 @@ class PreemptionTest {
         assertFalse(believes(arch, "go_failed"));
         perceive("stop", "next", "resume_now");
         await(".resume(go): the action failed 'suspended'", () -> believes(arch, "saw_suspended"));
-        assertEquals(0, arch.pendingActions());
+        assertEquals(0, arch.actions().pendingCount());
         assertNull(bridge.outbox().poll(), "no second cancel");
     }
 
     @Test
     void theTimeoutCancelsTheAction() throws Exception {
         RosAgArch arch = start("true");
-        bridge.setActionTimeoutNanos(2 * SECOND);
+        bridge.actions().setTimeoutNanos(2 * SECOND);
         Outbound.Action move = next(Outbound.Action.class);
         bridge.tick(103 * SECOND);
         assertEquals(new Outbound.Cancel("mover", move.actionId(), Protocol.TIMEOUT), next(Outbound.Cancel.class));
@@ -126,15 +127,15 @@ class PreemptionTest {
     @Test
     void anActionWhoseDecomposerWentAwayFailsAndIsCancelled() throws Exception {
         RosAgArch arch = start("true");
-        bridge.setDecomposerGraceNanos(0);
+        bridge.actions().setDecomposerGraceNanos(0);
         Outbound.Action move = next(Outbound.Action.class);
-        assertTrue(bridge.event("mover", Protocol.ACTION_STARTED, new String[] { "" + move.actionId() }, "/motion_decomp"));
-        bridge.decomposersTick(new String[] { "/motion_decomp", "/other" });
-        bridge.decomposersTick(new String[] { "/motion_decomp" });
-        assertEquals(1, arch.pendingActions(), "its decomposer is still there");
-        bridge.decomposersTick(new String[] { "/other" }); // first seen missing
+        assertTrue(bridge.actions().event("mover", Protocol.ACTION_STARTED, new String[] { "" + move.actionId() }, "/motion_decomp"));
+        bridge.actions().decomposersTick(new String[] { "/motion_decomp", "/other" });
+        bridge.actions().decomposersTick(new String[] { "/motion_decomp" });
+        assertEquals(1, arch.actions().pendingCount(), "its decomposer is still there");
+        bridge.actions().decomposersTick(new String[] { "/other" }); // first seen missing
         Thread.sleep(1);
-        bridge.decomposersTick(new String[] { "/other" });
+        bridge.actions().decomposersTick(new String[] { "/other" });
         assertEquals(new Outbound.Cancel("mover", move.actionId(), Protocol.DECOMPOSER_LOST), next(Outbound.Cancel.class));
         await("-!go with decomposer_lost", () -> believes(arch, "go_failed"));
     }
@@ -142,11 +143,11 @@ class PreemptionTest {
     @Test
     void anActionNobodyClaimedIsLeftToItsTimeout() throws Exception {
         RosAgArch arch = start("true");
-        bridge.setDecomposerGraceNanos(0);
+        bridge.actions().setDecomposerGraceNanos(0);
         next(Outbound.Action.class);
-        bridge.decomposersTick(new String[0]);
+        bridge.actions().decomposersTick(new String[0]);
         Thread.sleep(1);
-        bridge.decomposersTick(new String[0]);
-        assertEquals(1, arch.pendingActions());
+        bridge.actions().decomposersTick(new String[0]);
+        assertEquals(1, arch.actions().pendingCount());
     }
 }

@@ -16,6 +16,8 @@ import rason.infra.RasonLocalMAS;
 /** A project with a misspelt class, a bad trust option or an agent Jason cannot create does not start. */
 class ProjectChecksTest {
 
+    private final Bridge bridge = new Bridge();
+
     @TempDir
     Path dir;
 
@@ -31,7 +33,7 @@ class ProjectChecksTest {
         Files.writeString(dir.resolve("ok.asl"), "!start. +!start <- +started.");
         Files.writeString(dir.resolve("broken.asl"), "+!start <- .print(\"x\"");
         Files.writeString(dir.resolve("p.mas2j"), "MAS p { agents: " + agents + " }");
-        mas = new RasonLocalMAS();
+        mas = bridge.newMas();
         Exception e = assertThrows(JasonException.class, () -> {
             mas.load(dir.resolve("p.mas2j").toString());
             mas.create();

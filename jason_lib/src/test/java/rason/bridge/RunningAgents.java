@@ -21,7 +21,7 @@ import rason.infra.RasonLocalMAS;
  * but the test itself: start one agent from its program, look into its
  * beliefs, wait for a condition, and stop everything so that nothing of one
  * test reaches the next: registered as an extension
- * ({@code @RegisterExtension final RunningAgents agents = new RunningAgents();}),
+ * ({@code @RegisterExtension final RunningAgents agents = new RunningAgents(bridge);}),
  * it stops them after each test, after the test class's own {@code @AfterEach}.
  */
 public final class RunningAgents implements AfterEachCallback {
@@ -29,8 +29,13 @@ public final class RunningAgents implements AfterEachCallback {
     public static final long SECOND = 1_000_000_000L;
     public static final long WAIT_MS = 10_000;
 
-    private final Bridge bridge = Bridge.get();
+    private final Bridge bridge;
     private RasonLocalMAS mas;
+
+    /** Agents of bridge (each test makes its own). */
+    public RunningAgents(Bridge bridge) {
+        this.bridge = bridge;
+    }
 
     /** Starts agent with program (in dir) at ROS time 100 s with a 60 s action timeout. */
     public RosAgArch start(Path dir, String agent, String program) throws Exception {
@@ -42,18 +47,29 @@ public final class RunningAgents implements AfterEachCallback {
         Files.writeString(dir.resolve(agent + ".asl"), program);
         Files.writeString(dir.resolve("test.mas2j"), "MAS test { agents: " + agent + " " + options + "; }");
         bridge.attach();
-        bridge.setActionTimeoutNanos(60 * SECOND);
+        bridge.actions().setTimeoutNanos(60 * SECOND);
         bridge.tick(100 * SECOND);
-        mas = new RasonLocalMAS();
+        mas = bridge.newMas();
         mas.load(dir.resolve("test.mas2j").toString());
         mas.create();
         while (bridge.outbox().poll() != null) {
             // the announcement of the new agent: the tests look at what the agent queues
         }
         mas.start();
-        RosAgArch arch = bridge.registry().get(agent);
+        RosAgArch arch = arch(agent);
         assertNotNull(arch, "agent " + agent + " registered");
         return arch;
+    }
+
+    /** The RosAgArch of a running agent, null if there is none of that name. */
+    public RosAgArch arch(String agent) {
+        var la = mas == null ? null : mas.getAg(agent);
+        return la == null ? null : RosAgArch.of(la.getTS());
+    }
+
+    /** The MAS of the agents started last. */
+    public RasonLocalMAS mas() {
+        return mas;
     }
 
     @Override
@@ -62,7 +78,7 @@ public final class RunningAgents implements AfterEachCallback {
     }
 
     public void stop() throws Exception {
-        bridge.shutdown(Protocol.SHUTDOWN);
+        bridge.shutdown(rason.core.Protocol.SHUTDOWN);
         if (mas != null)
             assertTrue(mas.stopAgents(5000), "agent threads end");
         bridge.detach();

@@ -28,9 +28,9 @@ class TrustedMessagesTest {
     private static final String OTHER_MAS = "/robot2/rason_mas";
     private static final String PLAN = "\"+!trick <- +tricked.\"";
 
-    private final Bridge bridge = Bridge.get();
+    private final Bridge bridge = new Bridge();
     @RegisterExtension
-    final RunningAgents agents = new RunningAgents();
+    final RunningAgents agents = new RunningAgents(bridge);
 
     @TempDir
     Path dir;
@@ -43,7 +43,7 @@ class TrustedMessagesTest {
     private OtherRobot otherRobot;
 
     private RosAgArch start(String agent, String program) throws Exception {
-        bridge.setMasId("/robot1/rason_mas");
+        bridge.fleet().setMasId("/robot1/rason_mas");
         otherRobot = new OtherRobot(bridge, OTHER_MAS, KEY);
         otherRobot.announce(new String[] { "carol", "mallory" }, false);
         return agents.start(dir, agent, program);
@@ -72,7 +72,7 @@ class TrustedMessagesTest {
 
     @Test
     void aRobotTheAgentTrustsMayTellItPlans() throws Exception {
-        bridge.trust().setParameterRule("open", TrustPolicy.Group.TELL_HOW, TrustPolicy.Rule.parse("carol"));
+        bridge.fleet().trust().setParameterRule("open", TrustPolicy.Group.TELL_HOW, TrustPolicy.Rule.parse("carol"));
         RosAgArch arch = start("open", "");
         assertEquals(0, fromOtherRobot("mallory", "open", "tellHow", PLAN, ""));
         assertEquals(1, fromOtherRobot("carol", "open", "tellHow", PLAN, ""));

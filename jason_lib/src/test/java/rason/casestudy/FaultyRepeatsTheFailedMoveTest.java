@@ -16,7 +16,7 @@ import org.junit.jupiter.api.io.TempDir;
 import rason.RosAgArch;
 import rason.bridge.Bridge;
 import rason.bridge.Outbound;
-import rason.bridge.Protocol;
+import rason.core.Protocol;
 import rason.bridge.RunningAgents;
 
 /**
@@ -40,9 +40,9 @@ class FaultyRepeatsTheFailedMoveTest {
             +watched <- !tryMove[source(helper)].
             """;
 
-    private final Bridge bridge = Bridge.get();
+    private final Bridge bridge = new Bridge();
     @RegisterExtension
-    final RunningAgents agents = new RunningAgents();
+    final RunningAgents agents = new RunningAgents(bridge);
 
     @TempDir
     Path dir;
@@ -55,12 +55,12 @@ class FaultyRepeatsTheFailedMoveTest {
     }
 
     private void fail(Outbound.Action action, String reason) {
-        assertTrue(bridge.event("faulty", Protocol.ACTION_FEEDBACK, new String[] { reason, "" + action.actionId() }));
+        assertTrue(bridge.actions().event("faulty", Protocol.ACTION_FEEDBACK, new String[] { reason, "" + action.actionId() }));
     }
 
     private void failedMoveIsRepeated(String length, String reversed) throws Exception {
         RosAgArch arch = agents.start(dir, "faulty", TRIAL);
-        bridge.perceive("test", new String[] { "go(" + length + ")" }, 100 * RunningAgents.SECOND);
+        bridge.perception().perceive("test", new String[] { "go(" + length + ")" }, 100 * RunningAgents.SECOND);
         Outbound.Action first = nextMove();
         assertArrayEquals(new String[] { length }, first.parameters());
         fail(first, "bad_move");
@@ -90,8 +90,8 @@ class FaultyRepeatsTheFailedMoveTest {
     private RosAgArch watchedMoveFails(String reason) throws Exception {
         Files.writeString(dir.resolve("helper.asl"), NOTING_HELPER);
         agents.start(dir, "faulty", TRIAL, "; helper");
-        RosAgArch helper = bridge.registry().get("helper");
-        bridge.perceive("test", new String[] { "watched" }, 100 * RunningAgents.SECOND);
+        RosAgArch helper = agents.arch("helper");
+        bridge.perception().perceive("test", new String[] { "watched" }, 100 * RunningAgents.SECOND);
         Outbound.Action watched = nextMove();
         while (!watched.parameters()[0].equals("0.3")) // the mission's, begun as a peer is present
             watched = nextMove();
@@ -102,7 +102,7 @@ class FaultyRepeatsTheFailedMoveTest {
     @Test
     void withoutAFailedMoveTheThesissShortMoveIsMade() throws Exception {
         agents.start(dir, "faulty", TRIAL);
-        bridge.perceive("test", new String[] { "watch" }, 100 * RunningAgents.SECOND);
+        bridge.perception().perceive("test", new String[] { "watch" }, 100 * RunningAgents.SECOND);
         assertArrayEquals(new String[] { "0.3" }, nextMove().parameters());
     }
 

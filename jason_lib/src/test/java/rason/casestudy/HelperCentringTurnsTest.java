@@ -15,7 +15,7 @@ import org.junit.jupiter.api.io.TempDir;
 import rason.RosAgArch;
 import rason.bridge.Bridge;
 import rason.bridge.Outbound;
-import rason.bridge.Protocol;
+import rason.core.Protocol;
 import rason.bridge.RunningAgents;
 
 /**
@@ -32,9 +32,9 @@ class HelperCentringTurnsTest {
             + "+go <- !helpme[source(faulty)].\n";
     private static final long FRAME_PERIOD = 10_000_000L;
 
-    private final Bridge bridge = Bridge.get();
+    private final Bridge bridge = new Bridge();
     @RegisterExtension
-    final RunningAgents agents = new RunningAgents();
+    final RunningAgents agents = new RunningAgents(bridge);
     private int frame = 0;
     private long now = 100 * RunningAgents.SECOND;
 
@@ -49,7 +49,7 @@ class HelperCentringTurnsTest {
         String counter = "cameraFrame(" + frame + "," + now / 1_000_000 + ")";
         String[] seen = Double.isNaN(angle) ? new String[] { counter }
                 : new String[] { String.format(Locale.ROOT, "robot(faulty,%.2f,1.5,-70)", angle), counter };
-        bridge.perceive("vision_synth_robots", seen, now);
+        bridge.perception().perceive("vision_synth_robots", seen, now);
     }
 
     /** Frames showing the robot at angle until the helper asks for an action (null: none in time). */
@@ -58,14 +58,14 @@ class HelperCentringTurnsTest {
     }
 
     private void done(Outbound.Action action) {
-        assertTrue(bridge.event("helper", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + action.actionId() }));
+        assertTrue(bridge.actions().event("helper", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + action.actionId() }));
     }
 
     @Test
     void aRobotThatStaysOffCentreEndsTheSearchAfterFourTurnsToIt() throws Exception {
         RosAgArch arch = agents.start(dir, "helper", SEARCHER);
         camera(20);
-        bridge.perceive("test", new String[] { "go" }, now);
+        bridge.perception().perceive("test", new String[] { "go" }, now);
         for (int i = 1; i <= 4; i++) {
             Outbound.Action turn = framesUntilAction(20, RunningAgents.WAIT_MS);
             assertTrue(turn != null, "turn " + i + " to the robot");
@@ -89,7 +89,7 @@ class HelperCentringTurnsTest {
     void aRobotCentredByATurnIsFound() throws Exception {
         RosAgArch arch = agents.start(dir, "helper", SEARCHER);
         camera(20);
-        bridge.perceive("test", new String[] { "go" }, now);
+        bridge.perception().perceive("test", new String[] { "go" }, now);
         Outbound.Action turn = framesUntilAction(20, RunningAgents.WAIT_MS);
         assertEquals("turn", turn.action());
         done(turn);

@@ -19,7 +19,7 @@ import jason.asSemantics.Unifier;
 import rason.RosAgArch;
 import rason.bridge.Bridge;
 import rason.bridge.Outbound;
-import rason.bridge.Protocol;
+import rason.core.Protocol;
 import rason.bridge.RunningAgents;
 
 /**
@@ -41,9 +41,9 @@ class HelperKeepsInViewTest {
             -!look <- +unseen.
             """;
 
-    private final Bridge bridge = Bridge.get();
+    private final Bridge bridge = new Bridge();
     @RegisterExtension
-    final RunningAgents agents = new RunningAgents();
+    final RunningAgents agents = new RunningAgents(bridge);
     private int frame = 0;
     /** ROS time: each frame is taken FRAME_PERIOD after the last, and the bridge hears of it. */
     private long now = NOW;
@@ -63,14 +63,14 @@ class HelperKeepsInViewTest {
         bridge.tick(now);
         String counter = "cameraFrame(" + frame + "," + now / 1_000_000 + ")";
         if (robot == null)
-            bridge.perceive("vision_synth_robots", new String[] { counter }, now);
+            bridge.perception().perceive("vision_synth_robots", new String[] { counter }, now);
         else
-            bridge.perceive("vision_synth_robots", new String[] { String.format(Locale.ROOT,
+            bridge.perception().perceive("vision_synth_robots", new String[] { String.format(Locale.ROOT,
                     "robot(faulty,%.2f,%.3f,%.2f)", robot[0], robot[1], robot[2]), counter }, now);
     }
 
     private void heading(double radians) {
-        bridge.perceive("odom", new String[] { String.format(Locale.ROOT, "pos(1,2,%.4f)", radians) }, now);
+        bridge.perception().perceive("odom", new String[] { String.format(Locale.ROOT, "pos(1,2,%.4f)", radians) }, now);
     }
 
     /**
@@ -122,7 +122,7 @@ class HelperKeepsInViewTest {
     }
 
     private void turned(Outbound.Action turn) {
-        assertTrue(bridge.event("watcher", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + turn.actionId() }));
+        assertTrue(bridge.actions().event("watcher", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + turn.actionId() }));
     }
 
     @Test
@@ -131,7 +131,7 @@ class HelperKeepsInViewTest {
         double[] robot = { 24, 1.5, -66 };
         heading(0.5);
         camera(robot);
-        bridge.perceive("test", new String[] { "go" }, now);
+        bridge.perception().perceive("test", new String[] { "go" }, now);
         Outbound.Action turn = framesUntilAction(robot);
         assertEquals("turn", turn.action());
         assertEquals(24.0, Double.parseDouble(turn.parameters()[0]), 0.01);
@@ -148,7 +148,7 @@ class HelperKeepsInViewTest {
         camera(new double[] { 26, 1.4, -70 });
         RunningAgents.await("the sighting noted", () -> believes(arch, "lastSeen(faulty,26)"));
         camera(null); // it went on out of the view
-        bridge.perceive("test", new String[] { "go" }, now);
+        bridge.perception().perceive("test", new String[] { "go" }, now);
         Outbound.Action turn = framesUntilAction(null);
         assertEquals("turn", turn.action());
         assertEquals(26.0, Double.parseDouble(turn.parameters()[0]), 0.01);
@@ -163,7 +163,7 @@ class HelperKeepsInViewTest {
         RosAgArch arch = agents.start(dir, "watcher", WATCHER);
         double[] robot = { -9.5, 1.7, -100 };
         camera(robot);
-        bridge.perceive("test", new String[] { "go" }, now);
+        bridge.perception().perceive("test", new String[] { "go" }, now);
         framesUntilSeen(arch, robot);
         assertView(robot, seen(arch));
         assertNull(bridge.outbox().poll(), "no turn");

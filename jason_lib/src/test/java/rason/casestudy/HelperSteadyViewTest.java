@@ -39,16 +39,16 @@ class HelperSteadyViewTest {
     /** The frames' stamps (ms of ROS time): the bridge's clock is at NOW. */
     private static final long NOW_MS = NOW / 1_000_000;
 
-    private final Bridge bridge = Bridge.get();
+    private final Bridge bridge = new Bridge();
     @RegisterExtension
-    final RunningAgents agents = new RunningAgents();
+    final RunningAgents agents = new RunningAgents(bridge);
 
     @TempDir
     Path dir;
 
 
     private void camera(String... literals) {
-        bridge.perceive("vision_synth_robots", literals, NOW);
+        bridge.perception().perceive("vision_synth_robots", literals, NOW);
     }
 
     /**
@@ -58,7 +58,7 @@ class HelperSteadyViewTest {
     private RosAgArch startLooking(int frameTimeout, String... firstFrame) throws Exception {
         RosAgArch arch = agents.start(dir, "watcher", WATCHER);
         camera(firstFrame);
-        bridge.perceive("test", new String[] { "go(" + frameTimeout + ")" }, NOW);
+        bridge.perception().perceive("test", new String[] { "go(" + frameTimeout + ")" }, NOW);
         return arch;
     }
 
@@ -87,7 +87,7 @@ class HelperSteadyViewTest {
     void afterAMotionAFrameTakenBeforeItEndedIsNotRead() throws Exception {
         RosAgArch arch = agents.start(dir, "watcher", WATCHER);
         camera("robot(faulty,-12,1.5,20)", frame(1, NOW_MS - 2000));
-        bridge.perceive("test", new String[] { "moved" }, NOW);
+        bridge.perception().perceive("test", new String[] { "moved" }, NOW);
         await("settling", () -> !arch.getTS().getC().getPendingIntentions().isEmpty());
         // the pipeline delivers a newer frame, but one taken before the motion ended
         camera("robot(faulty,-8,1.5,24)", frame(2, NOW_MS - 1000));

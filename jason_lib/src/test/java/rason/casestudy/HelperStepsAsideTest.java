@@ -21,7 +21,7 @@ import jason.asSyntax.NumberTerm;
 import rason.RosAgArch;
 import rason.bridge.Bridge;
 import rason.bridge.Outbound;
-import rason.bridge.Protocol;
+import rason.core.Protocol;
 import rason.bridge.RunningAgents;
 
 /**
@@ -39,9 +39,9 @@ class HelperStepsAsideTest {
     /** Where the helper first saw the robot steadily (odometry: x, y, heading CCW). */
     private static final double[] VIEWPOINT = { 1.0, 2.0, 0.5 };
 
-    private final Bridge bridge = Bridge.get();
+    private final Bridge bridge = new Bridge();
     @RegisterExtension
-    final RunningAgents agents = new RunningAgents();
+    final RunningAgents agents = new RunningAgents(bridge);
     private int frame = 0;
     private long now = 100 * RunningAgents.SECOND;
     /** The helper's pose as its odometry has it. */
@@ -68,7 +68,7 @@ class HelperStepsAsideTest {
     private RosAgArch start(String then) throws Exception {
         Files.writeString(dir.resolve("faulty.asl"), FAULTY);
         agents.start(dir, "helper", agent(then), "; faulty"); // the .mas2j's second agent
-        return bridge.registry().get("faulty");
+        return agents.arch("faulty");
     }
 
     private static String agent(String then) {
@@ -80,7 +80,7 @@ class HelperStepsAsideTest {
     }
 
     private void odometry() {
-        bridge.perceive("odom", new String[] { String.format(Locale.ROOT, "pos(%.5f,%.5f,%.5f)", pose[0], pose[1], pose[2]) },
+        bridge.perception().perceive("odom", new String[] { String.format(Locale.ROOT, "pos(%.5f,%.5f,%.5f)", pose[0], pose[1], pose[2]) },
                 now);
     }
 
@@ -92,11 +92,11 @@ class HelperStepsAsideTest {
         odometry();
         String counter = "cameraFrame(" + frame + "," + now / 1_000_000 + ")";
         if (!visible) {
-            bridge.perceive("vision_synth_robots", new String[] { counter }, now);
+            bridge.perception().perceive("vision_synth_robots", new String[] { counter }, now);
             return;
         }
         double[] v = CameraFrames.view(pose, robotAt());
-        bridge.perceive("vision_synth_robots", new String[] {
+        bridge.perception().perceive("vision_synth_robots", new String[] {
                 String.format(Locale.ROOT, "robot(faulty,%.2f,%.3f,%.2f)", v[0], v[1], v[2]), counter }, now);
     }
 
@@ -131,7 +131,7 @@ class HelperStepsAsideTest {
         } else
             throw new AssertionError("unexpected action " + action);
         odometry();
-        assertTrue(bridge.event("helper", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + action.actionId() }));
+        assertTrue(bridge.actions().event("helper", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + action.actionId() }));
     }
 
     /**
@@ -170,7 +170,7 @@ class HelperStepsAsideTest {
         double[] first = { -3.0, 1.5, 2.0 };
         RosAgArch faulty = start(text(first));
         odometry();
-        bridge.perceive("test", new String[] { "go" }, now);
+        bridge.perception().perceive("test", new String[] { "go" }, now);
 
         List<String> left = stepAside(false);
         assertEquals("turn(-90)", left.get(0));
@@ -192,7 +192,7 @@ class HelperStepsAsideTest {
     void hiddenFromBothSidesIsSaidSo() throws Exception {
         RosAgArch faulty = start("0,1.5,0");
         odometry();
-        bridge.perceive("test", new String[] { "go" }, now);
+        bridge.perception().perceive("test", new String[] { "go" }, now);
         stepAside(false);
         stepAside(false);
         assertEquals("noFeedback(\"the helper lost sight of the robot after it moved\")", answer(faulty, false));

@@ -25,8 +25,10 @@ import rason.bridge.RunningAgents;
 /** Jason's web mind inspector, asked for by the .mas2j option, served on loopback on a free port. */
 class LoopbackMindInspectorTest {
 
+    private final Bridge bridge = new Bridge();
+
     @RegisterExtension
-    final RunningAgents agents = new RunningAgents();
+    final RunningAgents agents = new RunningAgents(bridge);
 
     @TempDir
     Path dir;
@@ -34,8 +36,8 @@ class LoopbackMindInspectorTest {
     @Test
     void servesTheAgentOnLoopbackOnAFreePortAndStopsWithTheAgents() throws Exception {
         agents.start(dir, "inspected", "likes(tea).\n", "[mindinspector=\"web(cycle,html,no_history)\"]");
-        await("the inspector runs", () -> !Bridge.get().mindInspectorUrl().isEmpty());
-        String url = Bridge.get().mindInspectorUrl();
+        await("the inspector runs", () -> !bridge.mind().inspectorUrl().isEmpty());
+        String url = bridge.mind().inspectorUrl();
         assertTrue(url.startsWith("http://127.0.0.1:"), url);
         assertTrue(!url.endsWith(":3272"), "not Jason's fixed port: " + url);
 
@@ -48,14 +50,14 @@ class LoopbackMindInspectorTest {
         await("its beliefs are shown", () -> get(url + "/agent-mind/inspected").contains("likes"));
 
         agents.stop();
-        assertEquals("", Bridge.get().mindInspectorUrl());
+        assertEquals("", bridge.mind().inspectorUrl());
     }
 
     @Test
     void noOptionNoInspector() throws Exception {
         agents.start(dir, "plain", "ready.\n");
-        await("started", () -> RunningAgents.believes(Bridge.get().registry().get("plain"), "ready"));
-        assertEquals("", Bridge.get().mindInspectorUrl());
+        await("started", () -> RunningAgents.believes(agents.arch("plain"), "ready"));
+        assertEquals("", bridge.mind().inspectorUrl());
     }
 
     private static String get(String url) {

@@ -17,7 +17,7 @@ import jason.asSemantics.Unifier;
 import jason.asSyntax.ASSyntax;
 
 import rason.bridge.Bridge;
-import rason.bridge.Protocol;
+import rason.core.Protocol;
 
 /**
  * Includes resolve as a project means them, whatever the working directory
@@ -26,6 +26,8 @@ import rason.bridge.Protocol;
  */
 class ProjectIncludeTest {
 
+    private final Bridge bridge = new Bridge();
+
     @TempDir
     Path dir;
 
@@ -33,11 +35,11 @@ class ProjectIncludeTest {
 
     @AfterEach
     void stop() throws Exception {
-        Bridge.get().shutdown(Protocol.SHUTDOWN);
+        bridge.shutdown(Protocol.SHUTDOWN);
         if (mas != null)
             mas.stopAgents(5000);
-        Bridge.get().detach();
-        while (Bridge.get().outbox().poll() != null) {
+        bridge.detach();
+        while (bridge.outbox().poll() != null) {
             // nothing of this test reaches the next one
         }
     }
@@ -50,8 +52,8 @@ class ProjectIncludeTest {
 
     private Agent load(String mas2j) throws Exception {
         write("p.mas2j", mas2j);
-        Bridge.get().attach();
-        mas = new RasonLocalMAS();
+        bridge.attach();
+        mas = bridge.newMas();
         mas.load(dir.resolve("p.mas2j").toString());
         mas.create();
         return mas.getAg("a").getTS().getAg();
@@ -122,7 +124,7 @@ class ProjectIncludeTest {
     void aMissingIncludeStopsTheProjectNamingEveryPathTried() throws Exception {
         write("robots/a.asl", "{ include(\"nowhere.asl\") } +!g <- true.");
         write("p.mas2j", "MAS p { agents: a ./robots/a.asl; aslSourcePath: \"lib\"; }");
-        mas = new RasonLocalMAS();
+        mas = bridge.newMas();
         Exception e = assertThrows(JasonException.class, () -> {
             mas.load(dir.resolve("p.mas2j").toString());
             mas.create();

@@ -1,5 +1,6 @@
 package rason.messaging;
 
+import rason.core.RateLimitedLog;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -10,7 +11,7 @@ import java.util.logging.Logger;
 
 import org.junit.jupiter.api.Test;
 
-import rason.bridge.InputLimits;
+import rason.core.InputLimits;
 
 class BoundedMessagesTest {
 
@@ -44,7 +45,7 @@ class BoundedMessagesTest {
     @Test
     void droppedMessagesAreLoggedAFewTimesPerPeriodAndCounted() {
         Logger logger = Logger.getLogger("test.bounded.fleet");
-        RateLimitedLogTest.Lines lines = RateLimitedLogTest.Lines.of(logger);
+        rason.core.RateLimitedLogTest.Lines lines = rason.core.RateLimitedLogTest.Lines.of(logger);
         RateLimitedLog limited = new RateLimitedLog(logger, 5, 3_600_000_000_000L);
         Fleet fleet = SigningPeer.fleet(logger, limited, "/me/rason_mas", 1);
         SigningPeer other = new SigningPeer("/other/rason_mas", 1);

@@ -1,5 +1,6 @@
 package rason.messaging;
 
+import rason.core.RateLimitedLog;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -21,7 +22,7 @@ class FleetAuthenticationTest {
     private static final Signed UNSIGNED = new Signed(0, 0, 0, "", new byte[0]);
 
     private final Logger logger = Logger.getLogger("test.fleet.auth." + System.identityHashCode(this));
-    private final RateLimitedLogTest.Lines lines = RateLimitedLogTest.Lines.of(logger);
+    private final rason.core.RateLimitedLogTest.Lines lines = rason.core.RateLimitedLogTest.Lines.of(logger);
     private final RateLimitedLog limited = new RateLimitedLog(logger, 5, 3_600_000_000_000L);
     private final Fleet fleet = SigningPeer.fleet(logger, limited, ME, FleetAuth.wallNanos() - 1_000_000_000L);
     private final SigningPeer robot2 = new SigningPeer(ROBOT2, FleetAuth.wallNanos() - 2_000_000_000L);

@@ -1,5 +1,8 @@
 package rason.messaging;
 
+import rason.core.Clock;
+import rason.core.InputLimits;
+import rason.core.RateLimitedLog;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -159,7 +162,7 @@ class FleetDirectoryTest {
 
     private Fleet fleet() {
         Fleet f = new Fleet(logger, SigningPeer.recording(new ArrayList<>(), fleetHeard), new RateLimitedLog(logger),
-                SigningPeer.authWithKeyA());
+                SigningPeer.authWithKeyA(), new InputLimits(), Clock.WALL);
         f.setMasId("/robot1/rason_mas");
         f.setIncarnation(System.currentTimeMillis() * 1_000_000L - 1_000_000_000L);
         f.localAgentsChanged(Set.of("boss"));

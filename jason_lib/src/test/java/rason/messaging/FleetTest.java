@@ -1,5 +1,8 @@
 package rason.messaging;
 
+import rason.core.Clock;
+import rason.core.InputLimits;
+import rason.core.RateLimitedLog;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -15,7 +18,7 @@ class FleetTest {
     private final List<String> stops = new ArrayList<>();
     private final Logger logger = Logger.getLogger("test.fleet");
     private final Fleet fleet = new Fleet(logger, SigningPeer.stopsInto(stops), new RateLimitedLog(logger),
-            SigningPeer.authWithKeyA());
+            SigningPeer.authWithKeyA(), new InputLimits(), Clock.WALL);
 
     private void hosting(String masId, long incarnation, String... agents) {
         fleet.setMasId(masId);

@@ -1,5 +1,8 @@
 package rason.messaging;
 
+import rason.core.Clock;
+import rason.core.InputLimits;
+import rason.core.RateLimitedLog;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
@@ -54,7 +57,7 @@ final class SigningPeer {
 
     /** A fleet (this process) with the test key A and a listener that ignores everything. */
     static Fleet fleet(Logger logger, RateLimitedLog limited, String masId, long incarnation) {
-        Fleet f = new Fleet(logger, stopsInto(new ArrayList<>()), limited, authWithKeyA());
+        Fleet f = new Fleet(logger, stopsInto(new ArrayList<>()), limited, authWithKeyA(), new InputLimits(), Clock.WALL);
         f.setMasId(masId);
         f.setIncarnation(incarnation);
         return f;

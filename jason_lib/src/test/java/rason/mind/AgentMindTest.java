@@ -19,23 +19,23 @@ import org.junit.jupiter.api.io.TempDir;
 import rason.RosAgArch;
 import rason.bridge.Bridge;
 import rason.bridge.Outbound;
-import rason.bridge.Protocol;
+import rason.core.Protocol;
 import rason.bridge.RunningAgents;
 
 /** jason/mind's snapshots of real Jason agents, read on their own threads. */
 class AgentMindTest {
 
-    private final Bridge bridge = Bridge.get();
+    private final Bridge bridge = new Bridge();
     @RegisterExtension
-    final RunningAgents agents = new RunningAgents();
+    final RunningAgents agents = new RunningAgents(bridge);
 
     @TempDir
     Path dir;
 
     @AfterEach
     void mindOff() {
-        bridge.setMindPeriodNanos(0);
-        bridge.setMindLimits(Bridge.MIND_MAX_ITEMS, Bridge.MIND_MAX_CHARS);
+        bridge.mind().setPeriodNanos(0);
+        bridge.mind().setLimits(200, 500);
     }
 
     private static final String MOVER = """
@@ -48,13 +48,13 @@ class AgentMindTest {
     /** The newest snapshot of agent once cond holds for it. */
     private AgentMind awaitMind(RosAgArch arch, String what, java.util.function.Predicate<AgentMind> cond)
             throws InterruptedException {
-        await(what, () -> arch.mind().latest() != null && cond.test(arch.mind().latest()));
-        return arch.mind().latest();
+        await(what, () -> rason.MindAgArch.of(arch.getTS()).recorder().latest() != null && cond.test(rason.MindAgArch.of(arch.getTS()).recorder().latest()));
+        return rason.MindAgArch.of(arch.getTS()).recorder().latest();
     }
 
     @Test
     void showsBeliefsGoalsTheWaitingIntentionAndItsPendingAction() throws Exception {
-        bridge.setMindPeriodNanos(SECOND / 100);
+        bridge.mind().setPeriodNanos(SECOND / 100);
         RosAgArch arch = agents.start(dir, "mover", MOVER);
         Outbound.Action move = agents.next(Outbound.Action.class);
         AgentMind m = awaitMind(arch, "the pending move", s -> !s.actions().isEmpty());
@@ -74,7 +74,7 @@ class AgentMindTest {
         assertTrue(m.events().stream().anyMatch(e -> e.startsWith("+!deliver(parcel)")), m.events().toString());
         assertTrue(m.cycle() > 0);
 
-        bridge.event("mover", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + move.actionId() });
+        bridge.actions().event("mover", Protocol.ACTION_FEEDBACK, new String[] { Protocol.OK, "" + move.actionId() });
         // the state it goes to sleep in: delivered, nothing left to do
         awaitMind(arch, "the delivery, nothing pending", s -> s.beliefs().contains("delivered(parcel)[source(self)]")
                 && s.actions().isEmpty() && s.intentions().isEmpty() && s.goals().isEmpty());
@@ -82,7 +82,7 @@ class AgentMindTest {
 
     @Test
     void theStateItPausesInIsReadWhateverThePeriod() throws Exception {
-        bridge.setMindPeriodNanos(3600 * SECOND); // only the first cycle and the pauses
+        bridge.mind().setPeriodNanos(3600 * SECOND); // only the first cycle and the pauses
         RosAgArch arch = agents.start(dir, "counter", """
                 !count(0).
                 +!count(N) : N < 50 <- -+counted(N + 1); !count(N + 1).
@@ -94,7 +94,7 @@ class AgentMindTest {
 
     @Test
     void messagesInAndOutAreNoted() throws Exception {
-        bridge.setMindPeriodNanos(SECOND / 100);
+        bridge.mind().setPeriodNanos(SECOND / 100);
         RosAgArch arch = agents.start(dir, "talker", """
                 !greet.
                 +!greet <- .my_name(Me); .send(Me, tell, hello(1)).
@@ -106,8 +106,8 @@ class AgentMindTest {
 
     @Test
     void listsAndEntriesAreBoundedAndWhatIsLeftOutCounted() throws Exception {
-        bridge.setMindLimits(10, 40);
-        bridge.setMindPeriodNanos(SECOND / 100);
+        bridge.mind().setLimits(10, 40);
+        bridge.mind().setPeriodNanos(SECOND / 100);
         RosAgArch arch = agents.start(dir, "hoarder", """
                 !fill(0).
                 +!fill(N) : N < 30 <- +item(N); !fill(N + 1).
@@ -125,14 +125,14 @@ class AgentMindTest {
         RosAgArch arch = agents.start(dir, "idle", "ready.\n");
         await("started", () -> believes(arch, "ready"));
         Thread.sleep(200); // positive check below: it sleeps with nothing read while off
-        assertNull(arch.mind().latest());
-        assertNull(bridge.mindChanges());
+        assertNull(rason.MindAgArch.of(arch.getTS()).recorder().latest());
+        assertNull(bridge.mind().changes());
 
-        bridge.setMindPeriodNanos(SECOND);
+        bridge.mind().setPeriodNanos(SECOND);
         awaitMind(arch, "read after turning on", s -> s.beliefs().contains("ready[source(self)]"));
-        AgentMind[] all = bridge.mindChanges();
+        AgentMind[] all = bridge.mind().changes();
         assertNotNull(all);
         assertEquals("idle", all[0].name());
-        assertNull(bridge.mindChanges(), "nothing changed since");
+        assertNull(bridge.mind().changes(), "nothing changed since");
     }
 }

@@ -10,7 +10,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
-import rason.bridge.InputLimits;
+import rason.core.InputLimits;
 
 class BoundedPerceptionsTest {
 

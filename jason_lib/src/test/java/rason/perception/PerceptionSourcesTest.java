@@ -16,7 +16,7 @@ import org.junit.jupiter.api.Test;
 
 import jason.asSyntax.Literal;
 
-import rason.bridge.InputLimits;
+import rason.core.InputLimits;
 
 class PerceptionSourcesTest {
 

@@ -1,4 +1,4 @@
-package rason.bridge;
+package rason.core;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;

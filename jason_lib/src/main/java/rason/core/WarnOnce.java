@@ -1,4 +1,4 @@
-package rason.messaging;
+package rason.core;
 
 import java.nio.charset.StandardCharsets;
 import java.security.MessageDigest;

@@ -1,4 +1,4 @@
-package rason.messaging;
+package rason.core;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -13,22 +13,22 @@ import java.util.logging.Logger;
 
 import org.junit.jupiter.api.Test;
 
-class RateLimitedLogTest {
+public class RateLimitedLogTest {
 
     static final long S = 1_000_000_000L;
 
     /** Collects what a logger logs, without passing it to the console. */
-    static final class Lines extends Handler {
-        final List<LogRecord> records = new ArrayList<>();
+    public static final class Lines extends Handler {
+        public final List<LogRecord> records = new ArrayList<>();
 
-        static Lines of(Logger logger) {
+        public static Lines of(Logger logger) {
             Lines l = new Lines();
             logger.setUseParentHandlers(false);
             logger.addHandler(l);
             return l;
         }
 
-        List<String> texts() {
+        public List<String> texts() {
             return records.stream().map(LogRecord::getMessage).toList();
         }
 

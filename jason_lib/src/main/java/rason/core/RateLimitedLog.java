@@ -1,4 +1,4 @@
-package rason.messaging;
+package rason.core;
 
 import java.util.ArrayList;
 import java.util.Iterator;

@@ -1,4 +1,4 @@
-package rason.bridge;
+package rason.core;
 
 import java.util.ArrayDeque;
 import java.util.Deque;
@@ -16,8 +16,8 @@ import jason.asSyntax.Term;
  * linear scan without recursion, made before Jason's parser runs; the term
  * check walks the parsed term with an explicit stack.
  * <p>
- * One instance, {@link #current()}, is what the bridge uses; the node sets it
- * from its ~params. Setters refuse values below 1.
+ * The bridge makes one instance and hands it to what parses input; the node sets
+ * it from its ~params. Setters refuse values below 1.
  */
 public final class InputLimits {
 
@@ -30,19 +30,12 @@ public final class InputLimits {
     /** Characters of a perception source's name: every per-source table holds the names. */
     public static final int MAX_SOURCE_LENGTH = 256;
 
-    private static final InputLimits CURRENT = new InputLimits();
-
     private volatile int maxLiteralLength = DEFAULT_MAX_LITERAL_LENGTH;
     private volatile int maxNesting = DEFAULT_MAX_NESTING;
     private volatile int maxTermDepth = DEFAULT_MAX_TERM_DEPTH;
     private volatile int maxLiterals = DEFAULT_MAX_LITERALS;
     private volatile int maxContentLength = DEFAULT_MAX_CONTENT_LENGTH;
     private volatile int maxSources = DEFAULT_MAX_SOURCES;
-
-    /** The limits the bridge applies. */
-    public static InputLimits current() {
-        return CURRENT;
-    }
 
     public int maxLiteralLength() {
         return maxLiteralLength;

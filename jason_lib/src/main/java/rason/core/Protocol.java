@@ -1,4 +1,4 @@
-package rason.bridge;
+package rason.core;
 
 /**
  * The words of the agents ↔ robot protocol, as rason_msgs/Event.msg defines

@@ -1,0 +1,65 @@
+package rason.core;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.atomic.AtomicInteger;
+
+/**
+ * Log lines of the agents and of Jason on their way to rosout. An agent's thread only
+ * queues a line; the node takes them with {@link #drain} on a thread of its own, so an
+ * agent that prints in every cycle never waits for Python. While no node is attached,
+ * lines go to stderr instead.
+ */
+public final class LogQueue {
+
+    /** One queued line: a java.util.logging level value, the agent ("" if none) and the text. */
+    public record Line(int level, String agent, String message) {
+    }
+
+    /** Lines kept while nobody drains; beyond this, the oldest are dropped (and counted). */
+    public static final int MAX_QUEUED = 100_000;
+
+    private final ConcurrentLinkedQueue<Line> queue = new ConcurrentLinkedQueue<>();
+    private final AtomicInteger queued = new AtomicInteger();
+    private final AtomicInteger dropped = new AtomicInteger();
+    private volatile boolean attached = false;
+
+    /** Queues a line for the node, or writes it to stderr when no node takes lines. */
+    public void add(int level, String agent, String message) {
+        if (!attached) {
+            System.err.println((agent.isEmpty() ? "" : "[" + agent + "] ") + message);
+            return;
+        }
+        queue.add(new Line(level, agent, message));
+        if (queued.incrementAndGet() > MAX_QUEUED && queue.poll() != null) {
+            queued.decrementAndGet();
+            dropped.incrementAndGet();
+        }
+    }
+
+    /** A node takes the lines from now on (true), or none does (false). */
+    public void setAttached(boolean on) {
+        attached = on;
+    }
+
+    public boolean isAttached() {
+        return attached;
+    }
+
+    /** Takes up to max queued lines, oldest first (empty if none). */
+    public Line[] drain(int max) {
+        List<Line> out = new ArrayList<>();
+        Line l;
+        while (out.size() < max && (l = queue.poll()) != null) {
+            queued.decrementAndGet();
+            out.add(l);
+        }
+        return out.toArray(new Line[0]);
+    }
+
+    /** Lines dropped because nobody drained them in time, since the last call. */
+    public int takeDropped() {
+        return dropped.getAndSet(0);
+    }
+}
