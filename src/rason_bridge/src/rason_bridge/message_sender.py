@@ -15,7 +15,7 @@ SENT = 'sent'
 HELD = 'held'
 
 
-class MessageOutbox(object):
+class MessageSender(object):
     """Publishes agent messages in order, holding those whose receiving process is not linked yet.
 
     :param publish: ``publish(message)`` sends one message (must not block)

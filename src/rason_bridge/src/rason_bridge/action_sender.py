@@ -17,7 +17,7 @@ DEFERRED = 'deferred'
 NO_DECOMPOSER = Event.NO_DECOMPOSER
 
 
-class ActionOutbox(object):
+class ActionSender(object):
     """Publishes actions, or holds them until their subscribers are connected.
 
     :param publish: ``publish(action)`` sends one action
