@@ -28,7 +28,7 @@ class ActionSender(object):
     :param clock: monotonic clock in seconds
     """
 
-    def __init__(self, publish, connected, listed, fail, connect_wait=2.0, clock=time.monotonic):
+    def __init__(self, publish, connected, listed, fail, connect_wait, clock=time.monotonic):
         self._publish = publish
         self._connected = connected
         self._listed = listed

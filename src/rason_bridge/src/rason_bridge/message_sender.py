@@ -24,7 +24,7 @@ class MessageSender(object):
     :param clock: monotonic clock in seconds
     """
 
-    def __init__(self, publish, linked, connect_wait=2.0, clock=time.monotonic):
+    def __init__(self, publish, linked, connect_wait, clock=time.monotonic):
         self._publish = publish
         self._linked = linked
         self._connect_wait = connect_wait
