@@ -2,29 +2,29 @@
 uint64 <-> Java long conversion."""
 import pytest
 
-from rason_bridge.fleet_auth import (DEFAULT_WINDOW, OFF, REQUIRED, auth_settings, default_key_file,
-                                     no_key_help, to_int64, to_uint64)
+from rason_bridge.fleet_auth import OFF, REQUIRED, default_key_file, no_key_help, to_int64, to_uint64
+from rason_bridge.params import read_settings
 
 ROS_HOME = '/home/robot/.ros'
 
 
 def settings(**given):
-    return auth_settings(lambda name, default: given.get(name, default), ROS_HOME)
+    return read_settings(lambda name, default: given.get(name, default), ROS_HOME)
 
 
 def test_defaults_require_the_key_file_under_ros_home():
     s = settings()
-    assert s.mode == REQUIRED
-    assert s.key_file == '/home/robot/.ros/rason/fleet.key' == default_key_file(ROS_HOME)
-    assert s.key_text is None
-    assert s.window == DEFAULT_WINDOW == 60.0
+    assert s.fleet_auth == REQUIRED
+    assert s.fleet_key_file == '/home/robot/.ros/rason/fleet.key' == default_key_file(ROS_HOME)
+    assert s.fleet_key is None
+    assert s.auth_window == 60.0
 
 
 def test_off_also_as_yaml_reads_it():
-    assert settings(fleet_auth='off').mode == OFF
-    assert settings(fleet_auth=False).mode == OFF  # _fleet_auth:=off on the command line
-    assert settings(fleet_auth=True).mode == REQUIRED
-    assert settings(fleet_auth='required').mode == REQUIRED
+    assert settings(fleet_auth='off').fleet_auth == OFF
+    assert settings(fleet_auth=False).fleet_auth == OFF  # _fleet_auth:=off on the command line
+    assert settings(fleet_auth=True).fleet_auth == REQUIRED
+    assert settings(fleet_auth='required').fleet_auth == REQUIRED
 
 
 @pytest.mark.parametrize('bad', ['yes', 'Required', '', 0, None])
@@ -35,15 +35,15 @@ def test_an_unknown_mode_is_refused(bad):
 
 def test_the_key_file_parameter_and_home_expansion(monkeypatch):
     monkeypatch.setenv('HOME', '/home/op')
-    assert settings(fleet_key_file='/etc/rason/fleet.key').key_file == '/etc/rason/fleet.key'
-    assert settings(fleet_key_file='~/fleet.key').key_file == '/home/op/fleet.key'
-    assert settings(fleet_key_file='').key_file == default_key_file(ROS_HOME), 'a launch arg left empty'
+    assert settings(fleet_key_file='/etc/rason/fleet.key').fleet_key_file == '/etc/rason/fleet.key'
+    assert settings(fleet_key_file='~/fleet.key').fleet_key_file == '/home/op/fleet.key'
+    assert settings(fleet_key_file='').fleet_key_file == default_key_file(ROS_HOME), 'a launch arg left empty'
 
 
 def test_the_key_parameter():
     s = settings(fleet_key='k' * 40)
-    assert s.key_text == 'k' * 40
-    assert settings(fleet_key='').key_text is None
+    assert s.fleet_key == 'k' * 40
+    assert settings(fleet_key='').fleet_key is None
     with pytest.raises(ValueError, match='fleet_key must be a string'):
         settings(fleet_key=1234567890123456789012345678901234567890)
     with pytest.raises(ValueError, match='not both'):
@@ -52,7 +52,7 @@ def test_the_key_parameter():
 
 @pytest.mark.parametrize('window', [0, 0.5, 10, 3600.0])
 def test_windows(window):
-    assert settings(auth_window=window).window == float(window)
+    assert settings(auth_window=window).auth_window == float(window)
 
 
 @pytest.mark.parametrize('bad', [-1, 'long', True, None, float('nan'), float('inf'), 1e300])

@@ -3,21 +3,21 @@ import math
 
 import pytest
 
-from rason_bridge.mind import (DEFAULT_MAX_CHARS, DEFAULT_MAX_ITEMS, DEFAULT_PERIOD, MindSwitch,
-                               mind_settings, to_msg)
+from rason_bridge.mind import MindSwitch, to_msg
+from rason_bridge.params import read_settings
 
 
-def params(**given):
-    return lambda name, default: given.get(name, default)
+def mind_settings(**given):
+    return read_settings(lambda name, default: given.get(name, default), '/tmp')
 
 
 def test_defaults():
-    s = mind_settings(params())
-    assert (s.period, s.max_items, s.max_chars) == (DEFAULT_PERIOD, DEFAULT_MAX_ITEMS, DEFAULT_MAX_CHARS)
+    s = mind_settings()
+    assert (s.mind_period, s.mind_max_items, s.mind_max_chars) == (0.5, 200, 500)
 
 
 def test_zero_period_is_off_and_accepted():
-    assert mind_settings(params(mind_period=0)).period == 0
+    assert mind_settings(mind_period=0).mind_period == 0
 
 
 @pytest.mark.parametrize('name,value', [
@@ -27,7 +27,7 @@ def test_zero_period_is_off_and_accepted():
 ])
 def test_bad_values_are_refused_naming_the_parameter(name, value):
     with pytest.raises(ValueError, match=name):
-        mind_settings(params(**{name: value}))
+        mind_settings(**{name: value})
 
 
 def test_switch_reads_only_while_somebody_subscribes():

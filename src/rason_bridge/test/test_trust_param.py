@@ -3,7 +3,8 @@ import jpype
 import pytest
 
 from rason_bridge.jvm import start_jvm
-from rason_bridge.trust import apply_trust, trust_rules
+from rason_bridge.java_config import push_trust
+from rason_bridge.trust import trust_rules
 
 start_jvm()
 Bridge = jpype.JClass('rason.bridge.Bridge')
@@ -30,8 +31,7 @@ def test_malformed_values_are_refused(bad):
 def test_rules_decide_what_the_agent_takes_from_other_robots():
     bridge = Bridge.get()
     # named agents only: the Bridge is one per process, and other tests share it
-    apply_trust(bridge, {'param_agent': {'tellHow': ['faulty']}, 'someone_else': {'achieve': 'none'}},
-                jpype.JException)
+    push_trust(bridge, trust_rules({'param_agent': {'tellHow': ['faulty']}, 'someone_else': {'achieve': 'none'}}))
     trust = bridge.trust()
     assert trust.allows('param_agent', 'faulty', 'tellHow')
     assert trust.allows('param_agent', 'faulty', 'untellHow')
@@ -46,4 +46,4 @@ def test_rules_decide_what_the_agent_takes_from_other_robots():
                                           ({'Helper': {'tell': 'all'}}, 'Helper/tell')])
 def test_java_refusals_name_the_rule(value, where):
     with pytest.raises(ValueError, match=where):
-        apply_trust(Bridge.get(), value, jpype.JException)
+        push_trust(Bridge.get(), trust_rules(value))

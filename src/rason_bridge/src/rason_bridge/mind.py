@@ -1,48 +1,13 @@
-"""jason/mind: the ~params that shape it, and the agents' snapshots (Java's
-``rason.mind.AgentMind``) as a ``rason_msgs/MindState``; no rospy.
+"""jason/mind: when the agents' states are read, and their snapshots (Java's
+``rason.mind.AgentMind``) as a ``rason_msgs/MindState``; no rospy. Its ~params are in
+:mod:`rason_bridge.params`.
 
 The snapshots are taken by the agents' own threads in Java (``RosAgArch``); the node's
 ``rason_mind`` thread only asks ``Bridge.mindChanges()`` for them and publishes, and
 turns the reading off while nobody subscribes, so an unwatched robot pays nothing.
 """
-from collections import namedtuple
-
 import genpy
 from rason_msgs.msg import AgentMind, IntentionState, MindState, PendingAction
-
-from rason_bridge.limits import seconds_to_nanos
-
-#: The defaults of ~mind_period (s), ~mind_max_items and ~mind_max_chars.
-DEFAULT_PERIOD = 0.5
-DEFAULT_MAX_ITEMS = 200
-DEFAULT_MAX_CHARS = 500
-#: The bounds the two limits may take: a snapshot stays far below rospy's message sizes.
-MAX_ITEMS = 10000
-MIN_CHARS, MAX_CHARS = 16, 100000
-
-MindSettings = namedtuple('MindSettings', 'period max_items max_chars')
-
-
-def mind_settings(get_param):
-    """The jason/mind settings from ``get_param(name, default)`` (private ~params).
-
-    ``mind_period`` 0 turns jason/mind off; otherwise states are read at most that often.
-
-    :raises ValueError: a value out of its range, naming the parameter
-    """
-    period = get_param('mind_period', DEFAULT_PERIOD)
-    seconds_to_nanos('mind_period', period)  # a number, finite, not absurd
-    if period < 0:
-        raise ValueError('mind_period must be 0 (off) or more seconds, not %r' % (period,))
-    max_items = _whole('mind_max_items', get_param('mind_max_items', DEFAULT_MAX_ITEMS), 1, MAX_ITEMS)
-    max_chars = _whole('mind_max_chars', get_param('mind_max_chars', DEFAULT_MAX_CHARS), MIN_CHARS, MAX_CHARS)
-    return MindSettings(float(period), max_items, max_chars)
-
-
-def _whole(name, value, low, high):
-    if isinstance(value, bool) or not isinstance(value, int) or not low <= value <= high:
-        raise ValueError('%s must be a whole number from %d to %d, not %r' % (name, low, high, value))
-    return value
 
 
 class MindSwitch(object):

@@ -36,15 +36,3 @@ def trust_rules(value):
             rules.append((agent, str(group), text))
     return rules
 
-
-def apply_trust(bridge, value, java_error=Exception):
-    """Hand every rule of a ``~trust`` value to Java's ``Bridge.setTrust``.
-
-    :param java_error: the exception type Java's refusals arrive as (``jpype.JException``)
-    :raises ValueError: a rule Python or Java refuses, saying which
-    """
-    for agent, group, who in trust_rules(value):
-        try:
-            bridge.setTrust(agent, group, who)
-        except java_error as e:
-            raise ValueError('trust: %s/%s: %s' % (agent, group, e.getMessage() if hasattr(e, 'getMessage') else e))

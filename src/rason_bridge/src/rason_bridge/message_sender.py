@@ -15,7 +15,7 @@ SENT = 'sent'
 HELD = 'held'
 
 
-class MessageOutbox(object):
+class MessageSender(object):
     """Publishes agent messages in order, holding those whose receiving process is not linked yet.
 
     :param publish: ``publish(message)`` sends one message (must not block)
@@ -24,7 +24,7 @@ class MessageOutbox(object):
     :param clock: monotonic clock in seconds
     """
 
-    def __init__(self, publish, linked, connect_wait=2.0, clock=time.monotonic):
+    def __init__(self, publish, linked, connect_wait, clock=time.monotonic):
         self._publish = publish
         self._linked = linked
         self._connect_wait = connect_wait

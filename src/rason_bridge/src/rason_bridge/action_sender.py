@@ -17,7 +17,7 @@ DEFERRED = 'deferred'
 NO_DECOMPOSER = Event.NO_DECOMPOSER
 
 
-class ActionOutbox(object):
+class ActionSender(object):
     """Publishes actions, or holds them until their subscribers are connected.
 
     :param publish: ``publish(action)`` sends one action
@@ -28,7 +28,7 @@ class ActionOutbox(object):
     :param clock: monotonic clock in seconds
     """
 
-    def __init__(self, publish, connected, listed, fail, connect_wait=2.0, clock=time.monotonic):
+    def __init__(self, publish, connected, listed, fail, connect_wait, clock=time.monotonic):
         self._publish = publish
         self._connected = connected
         self._listed = listed

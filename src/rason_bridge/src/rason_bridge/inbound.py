@@ -1,0 +1,78 @@
+"""ROS -> agents: the subscriptions of rason_mas, each message handed to Java as it comes
+(rospy plumbing; parsing and checking are Java's)."""
+import rospy
+from rason_msgs.msg import AgentMessage, Event, Perception, Presence
+from rosgraph_msgs.msg import Clock
+
+from rason_bridge.fleet_auth import to_int64
+from rason_bridge.ros_links import publisher
+
+
+class Inbound(object):
+    """
+    :param java_bridge: Java's ``Bridge``
+    :param perceptions: the :class:`rason_bridge.perception_pump.PerceptionPump`
+    :param now_ns: ``now_ns()`` -> the ROS time in nanoseconds
+    """
+
+    def __init__(self, java_bridge, mas_id, perceptions, now_ns):
+        self._bridge = java_bridge
+        self._mas_id = mas_id
+        self._perceptions = perceptions
+        self._now_ns = now_ns
+        self.events = None  # the jason/event subscriber, once subscribed
+
+    def subscribe(self, messages_topic, presence_topic):
+        self.events = rospy.Subscriber('jason/event', Event, self._on_event, queue_size=None, tcp_nodelay=True)
+        rospy.Subscriber('jason/perception', Perception, self._on_perception, queue_size=100, tcp_nodelay=True)
+        rospy.Subscriber(messages_topic, AgentMessage, self._on_message, queue_size=None, tcp_nodelay=True)
+        rospy.Subscriber(presence_topic, Presence, self._on_presence, queue_size=100, tcp_nodelay=True)
+
+    def follow_clock(self, java_error):
+        """Under /use_sim_time, Jason's .wait, .at, deadlines and .send timeouts follow /clock
+        (each message is pushed to Java, so a wait ends within one clock step of its time)."""
+        sim_time = bool(rospy.get_param('/use_sim_time', False))
+        try:
+            self._bridge.agentsOnRosTime(sim_time)
+        except java_error as e:
+            rospy.logerr('the agents keep the wall clock for .wait and timeouts: %s', e.getMessage())
+            return
+        if sim_time:
+            rospy.Subscriber('/clock', Clock, self._on_clock, queue_size=1, tcp_nodelay=True)
+            rospy.loginfo('agents on ROS time: .wait and Jason timeouts follow /clock')
+
+    def _on_clock(self, msg):
+        self._bridge.clockAdvanced(msg.clock.to_nsec())
+
+    def _on_perception(self, msg):
+        self._perceptions.put(msg.source, msg.perception, self._now_ns())
+
+    def _on_event(self, msg):
+        # parsed and checked in Java; the publisher is the decomposer to watch after action_started
+        self._bridge.event(msg.agent, msg.event_type, msg.parameters, publisher(msg))
+
+    def _on_message(self, msg):
+        if msg.sender_mas == self._mas_id or (msg.receiver_mas and msg.receiver_mas != self._mas_id):
+            return  # our own, or for another process: the common case, kept out of Java
+        try:
+            # checked (authentication, then form) and parsed in Java
+            self._bridge.deliverMessage(msg.sender_mas, msg.sender, msg.receiver_mas, msg.receiver,
+                                        msg.performative, msg.content, msg.msg_id, msg.in_reply_to,
+                                        to_int64(msg.incarnation), to_int64(msg.sequence), to_int64(msg.stamp),
+                                        msg.key_id, msg.mac, publisher(msg))
+        except Exception as e:  # a bug must not kill the subscriber thread
+            rospy.logerr('could not deliver message from %s (%s): %s', msg.sender, msg.sender_mas, e)
+
+    def _on_presence(self, msg):
+        if msg.mas_id == self._mas_id:
+            return
+        if msg.incarnation >= 2 ** 63:
+            rospy.logwarn_throttle(10, 'ignored presence of %r: incarnation %d out of range',
+                                   msg.mas_id, msg.incarnation)
+            return
+        try:
+            self._bridge.presenceAnnounced(msg.mas_id, msg.incarnation, msg.agents, msg.df_agents, msg.df_services,
+                                           msg.period, msg.leaving, to_int64(msg.sequence), to_int64(msg.stamp),
+                                           msg.key_id, msg.mac, publisher(msg))
+        except Exception as e:
+            rospy.logerr('could not handle presence of %r: %s', msg.mas_id, e)

@@ -1,0 +1,112 @@
+"""The one place that hands rason_mas's settings to Java (``rason.bridge.Bridge``, its
+``InputLimits`` and ``rason.infra.RasonLocalMAS``): a change of the Java API is made here only.
+No rospy; the JVM must be running (:func:`rason_bridge.jvm.start_jvm`)."""
+import jpype
+
+from rason_bridge.fleet_auth import OFF
+from rason_bridge.params import ParamError, seconds_to_nanos
+
+#: ~param -> the InputLimits setter it sets.
+INPUT_LIMIT_SETTERS = {
+    'max_literal_length': 'setMaxLiteralLength',
+    'max_content_length': 'setMaxContentLength',
+    'max_nesting': 'setMaxNesting',
+    'max_term_depth': 'setMaxTermDepth',
+    'max_literals': 'setMaxLiterals',
+    'max_sources': 'setMaxSources',
+}
+
+
+class FleetKeyError(RuntimeError):
+    """Fleet authentication is required and no usable key could be loaded (the text says why)."""
+
+
+def bridge():
+    """The process's one Java ``Bridge``."""
+    return jpype.JClass('rason.bridge.Bridge').get()
+
+
+def _nanos(settings, name):
+    return seconds_to_nanos(name, getattr(settings, name))
+
+
+def push(java_bridge, settings, mas_id, incarnation):
+    """Everything but the fleet key, before the project is loaded.
+
+    :param settings: :data:`rason_bridge.params.Settings`
+    :raises ParamError: a value Java refuses (``perception_manager``, ``trust``), saying which and why
+    """
+    java_bridge.setActionTimeoutNanos(_nanos(settings, 'action_timeout'))
+    java_bridge.setPerceptionTtlNanos(_nanos(settings, 'perception_ttl'))
+    java_bridge.setPresenceTimeoutNanos(_nanos(settings, 'presence_timeout'))
+    java_bridge.setAskTimeoutNanos(_nanos(settings, 'ask_timeout'))
+    java_bridge.setDecomposerGraceNanos(_nanos(settings, 'decomposer_grace'))
+    java_bridge.setPresenceBeliefs(settings.presence_beliefs)
+    try:
+        java_bridge.setDefaultPerceptionManager(settings.perception_manager)
+    except jpype.JException as e:
+        raise ParamError('perception_manager: %s' % e.getMessage())
+    push_input_limits(java_bridge.limits(), settings)
+    push_trust(java_bridge, settings.trust)
+    if settings.mind_period > 0:
+        java_bridge.setMindLimits(settings.mind_max_items, settings.mind_max_chars)
+        java_bridge.setMindPeriodNanos(0)  # read only once somebody subscribes
+    # Between processes: the node name is the MAS id, the start time tells a restarted process from the one before.
+    java_bridge.setMasId(mas_id)
+    java_bridge.setIncarnation(incarnation)
+
+
+def push_input_limits(limits, settings):
+    """The ``max_*`` settings into Java's ``InputLimits``."""
+    for name, setter in INPUT_LIMIT_SETTERS.items():
+        getattr(limits, setter)(getattr(settings, name))
+
+
+def push_trust(java_bridge, rules):
+    """The ``trust`` rules (``(agent, group, who)``) into Java's ``TrustPolicy``.
+
+    :raises ParamError: a rule Java refuses, saying which and why
+    """
+    for agent, group, who in rules:
+        try:
+            java_bridge.setTrust(agent, group, who)
+        except jpype.JException as e:
+            raise ParamError('trust: %s/%s: %s' % (agent, group, e.getMessage()))
+
+
+def push_auth(java_bridge, settings):
+    """Sign and check messages and presence with the fleet key, or not at all.
+
+    :raises FleetKeyError: authentication is required and the key cannot be loaded
+    """
+    if settings.fleet_auth == OFF:
+        java_bridge.fleetAuthOff()
+        return
+    java_bridge.setAuthWindowNanos(_nanos(settings, 'auth_window'))
+    try:
+        if settings.fleet_key is not None:
+            java_bridge.requireFleetKeyText(settings.fleet_key, '~fleet_key')
+        else:
+            java_bridge.requireFleetKeyFile(settings.fleet_key_file)
+    except jpype.JException as e:
+        raise FleetKeyError(str(e.getMessage()))
+
+
+def load_mas(settings, mas2j_path):
+    """Load the project and create its agents (named with ``agent_prefix``); returns the Java MAS.
+
+    :raises RuntimeError: the project cannot be loaded (Java's message)
+    """
+    mas = jpype.JClass('rason.infra.RasonLocalMAS')()
+    try:
+        mas.setAgentPrefix(settings.agent_prefix)
+        mas.load(mas2j_path)
+        mas.create()
+    except jpype.JException as e:
+        raise RuntimeError(str(e.getMessage()))
+    return mas
+
+
+def max_source_length():
+    """The fixed bound on a perception source's name (Java's ``InputLimits.MAX_SOURCE_LENGTH``)."""
+    return int(jpype.JClass('rason.bridge.InputLimits').MAX_SOURCE_LENGTH)

@@ -1,0 +1,55 @@
+"""The log pump: the thread that writes the agents' ``.print`` and Jason's log lines, queued
+on the Java side (``rason.infra.RosLogHandler``), off the agents' threads, so printing never
+makes an agent wait for Python; no rospy."""
+import threading
+
+#: How often the thread looks for queued lines (s), and how many it takes at once.
+POLL = 0.02
+BATCH = 500
+
+#: java.util.logging's levels (SEVERE, WARNING, INFO) -> the level written; below INFO: debug.
+_LEVELS = ((1000, 'error'), (900, 'warn'), (800, 'info'))
+
+
+def level_name(java_level):
+    """``'error'``, ``'warn'``, ``'info'`` or ``'debug'`` for a java.util.logging level."""
+    return next((name for at_least, name in _LEVELS if java_level >= at_least), 'debug')
+
+
+class LogPump(object):
+    """
+    :param lines: the Java ``RosLogHandler`` class (``drain(max)``, ``takeDropped()``)
+    :param write: ``write(level_name, text)`` writes one line
+    """
+
+    def __init__(self, lines, write):
+        self._lines = lines
+        self._write = write
+        self._stop = threading.Event()
+
+    def start(self):
+        threading.Thread(target=self._run, name='rason_log', daemon=True).start()
+
+    def _run(self):
+        while not self._stop.is_set():
+            if not self.drain():
+                self._stop.wait(POLL)
+
+    def close(self, detach):
+        """Stop the thread, ``detach()`` Java's queue (it logs to stderr from then on), write what it still holds."""
+        self._stop.set()
+        detach()
+        while self.drain():
+            pass
+
+    def drain(self):
+        """Writes the queued lines; returns how many there were."""
+        lines = self._lines.drain(BATCH)
+        for line in lines:
+            agent, message = str(line.agent()), str(line.message())
+            self._write(level_name(int(line.level())), '[%s] %s' % (agent, message) if agent else message)
+        dropped = int(self._lines.takeDropped())
+        if dropped:
+            self._write('warn', '%d log lines of the agents were dropped: they came faster than rosout took them'
+                        % dropped)
+        return len(lines)

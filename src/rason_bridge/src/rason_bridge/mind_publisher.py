@@ -1,0 +1,54 @@
+"""The mind publisher: the thread that switches the agents' state readings on while jason/mind
+has subscribers, and publishes what changed (:mod:`rason_bridge.mind`); no rospy."""
+import threading
+
+from rason_bridge.mind import MindSwitch, to_msg
+
+
+class MindPublisher(object):
+    """
+    :param java_bridge: Java's ``Bridge`` (``setMindPeriodNanos``, ``mindChanges``, ``mindInspectorUrl``)
+    :param publisher: the jason/mind publisher (``get_num_connections``, ``publish``)
+    :param period: seconds between two readings (more than 0)
+    :param now_ns: ``now_ns()`` -> the ROS time in nanoseconds
+    :param closed: the exception a publisher raises once the node shuts down
+    :param alive: ``alive()`` -> False once the process shuts down
+    """
+
+    def __init__(self, java_bridge, publisher, mas_id, period, now_ns, closed, debug, alive=lambda: True):
+        self._bridge = java_bridge
+        self._publisher = publisher
+        self._mas_id = mas_id
+        self._period = period
+        self._now_ns = now_ns
+        self._closed = closed
+        self._debug = debug
+        self._alive = alive
+        self._switch = MindSwitch(int(round(period * 1e9)))
+        self._stop = threading.Event()
+
+    def start(self):
+        threading.Thread(target=self._run, name='rason_mind', daemon=True).start()
+
+    def stop(self):
+        self._stop.set()
+
+    def _run(self):
+        while not self._stop.is_set() and self._alive():
+            self.step()
+            self._stop.wait(self._period)
+
+    def step(self):
+        """Switch the readings on or off as the subscribers come and go; publish what changed."""
+        period = self._switch.update(self._publisher.get_num_connections())
+        if period is not None:
+            self._bridge.setMindPeriodNanos(period)
+        if not self._switch.on:
+            return
+        minds = self._bridge.mindChanges()
+        if minds is not None:
+            try:
+                self._publisher.publish(to_msg(self._mas_id, self._now_ns(), minds,
+                                               str(self._bridge.mindInspectorUrl())))
+            except self._closed as e:  # shutting down
+                self._debug('jason/mind not published: %s', e)
