@@ -8,7 +8,7 @@ from rason_bridge.jvm import start_jvm
 from rason_bridge.params import BY_NAME, ParamError, read_settings, seconds_to_nanos
 
 start_jvm()
-InputLimits = jpype.JClass('rason.bridge.InputLimits')
+InputLimits = jpype.JClass('rason.core.InputLimits')
 GETTERS = {'max_literal_length': 'maxLiteralLength', 'max_content_length': 'maxContentLength',
            'max_nesting': 'maxNesting', 'max_term_depth': 'maxTermDepth', 'max_literals': 'maxLiterals',
            'max_sources': 'maxSources'}

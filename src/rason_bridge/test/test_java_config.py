@@ -8,22 +8,41 @@ from rason_bridge.params import ParamError, read_settings
 
 start_jvm()
 Bridge = jpype.JClass('rason.bridge.Bridge')
-InputLimits = jpype.JClass('rason.bridge.InputLimits')
+InputLimits = jpype.JClass('rason.core.InputLimits')
+#: The ports java_config reaches through the Bridge's accessors, and their Java classes.
+PORTS = {'actions': jpype.JClass('rason.action.ActionPort'),
+         'perception': jpype.JClass('rason.perception.PerceptionPort'),
+         'fleet': jpype.JClass('rason.messaging.FleetPort'),
+         'mind': jpype.JClass('rason.mind.MindPort')}
+
+
+class RecordingPort(object):
+    """Records each call as (port.method, args...)."""
+
+    def __init__(self, name, calls):
+        self._name = name
+        self._calls = calls
+
+    def __getattr__(self, method):
+        return lambda *args: self._calls.append(('%s.%s' % (self._name, method),) + args)
 
 
 class RecordingBridge(object):
-    """Records each call; ``limits()`` is a real InputLimits."""
+    """Records each call on its ports; ``limits()`` is a real InputLimits."""
 
     def __init__(self):
         self.calls = []
         self.input_limits = InputLimits()
+        self.ports = {name: RecordingPort(name, self.calls) for name in PORTS}
 
     def limits(self):
         self.calls.append(('limits',))
         return self.input_limits
 
     def __getattr__(self, name):
-        return lambda *args: self.calls.append((name,) + args)
+        if name in PORTS:
+            return lambda: self.ports[name]
+        raise AttributeError(name)
 
 
 def settings(**given):
@@ -41,46 +60,49 @@ def test_every_method_called_is_one_of_the_java_bridges():
     java_config.push_auth(bridge, settings())
     java_config.push_auth(bridge, settings(fleet_auth='off'))
     java_config.push_auth(bridge, settings(fleet_key='k' * 40))
-    names = set(call[0] for call in bridge.calls)
-    assert {'setTrust', 'setMindLimits', 'requireFleetKeyFile', 'requireFleetKeyText', 'fleetAuthOff'} <= names
-    assert [n for n in names if not hasattr(Bridge, n)] == []
+    names = set(call[0] for call in bridge.calls if '.' in call[0])
+    assert {'fleet.setTrust', 'mind.setLimits', 'fleet.requireKeyFile', 'fleet.requireKeyText',
+            'fleet.authOff'} <= names
+    assert [n for n in names if not hasattr(PORTS[n.split('.')[0]], n.split('.')[1])] == []
+    assert all(hasattr(Bridge, port) for port in PORTS)
 
 
 def test_durations_go_in_nanoseconds_and_identity_last():
     calls = pushed(action_timeout=1.5, ask_timeout=0, decomposer_grace=0.25).calls
-    assert ('setActionTimeoutNanos', 1500000000) in calls
-    assert ('setAskTimeoutNanos', 0) in calls
-    assert ('setDecomposerGraceNanos', 250000000) in calls
-    assert ('setPerceptionTtlNanos', 2000000000) in calls and ('setPresenceTimeoutNanos', 2000000000) in calls
-    assert ('setPresenceBeliefs', True) in calls and ('setDefaultPerceptionManager', 'per_source') in calls
-    assert calls[-2:] == [('setMasId', '/r1/rason_mas'), ('setIncarnation', 42)]
+    assert ('actions.setTimeoutNanos', 1500000000) in calls
+    assert ('fleet.setAskTimeoutNanos', 0) in calls
+    assert ('actions.setDecomposerGraceNanos', 250000000) in calls
+    assert ('perception.setTtlNanos', 2000000000) in calls and ('fleet.setPresenceTimeoutNanos', 2000000000) in calls
+    assert ('fleet.setPresenceBeliefs', True) in calls and ('perception.setDefaultManager', 'per_source') in calls
+    assert calls[-2:] == [('fleet.setMasId', '/r1/rason_mas'), ('fleet.setIncarnation', 42)]
 
 
 def test_input_limits_and_mind_bounds():
     bridge = pushed(max_sources=7, mind_max_items=9)
     assert bridge.input_limits.maxSources() == 7
-    assert ('setMindLimits', 9, 500) in bridge.calls and ('setMindPeriodNanos', 0) in bridge.calls
-    assert not [c for c in pushed(mind_period=0).calls if c[0].startswith('setMind')]
+    assert ('mind.setLimits', 9, 500) in bridge.calls and ('mind.setPeriodNanos', 0) in bridge.calls
+    assert not [c for c in pushed(mind_period=0).calls if c[0].startswith('mind.')]
 
 
 def test_the_auth_window_goes_with_a_required_key_only():
     bridge = RecordingBridge()
     java_config.push_auth(bridge, settings(auth_window=5))
-    assert bridge.calls == [('setAuthWindowNanos', 5000000000),
-                            ('requireFleetKeyFile', '/home/robot/.ros/rason/fleet.key')]
+    assert bridge.calls == [('fleet.setAuthWindowNanos', 5000000000),
+                            ('fleet.requireKeyFile', '/home/robot/.ros/rason/fleet.key')]
     bridge = RecordingBridge()
     java_config.push_auth(bridge, settings(fleet_auth='off'))
-    assert bridge.calls == [('fleetAuthOff',)]
+    assert bridge.calls == [('fleet.authOff',)]
 
 
 class RefusingBridge(RecordingBridge):
-    """Java's own checks of the perception manager and the key file; everything else recorded."""
+    """Java's own checks of the perception manager and the key file (a real Bridge's ports);
+    everything else recorded."""
 
-    def setDefaultPerceptionManager(self, spec):
-        Bridge.get().setDefaultPerceptionManager(spec)  # refuses before it changes anything
-
-    def requireFleetKeyFile(self, path):
-        Bridge.get().requireFleetKeyFile(path)  # refuses before it changes anything
+    def __init__(self):
+        super().__init__()
+        real = Bridge()
+        self.ports['perception'] = real.perception()
+        self.ports['fleet'] = real.fleet()
 
 
 def test_javas_refusals_name_the_parameter():

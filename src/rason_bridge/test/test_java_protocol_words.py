@@ -1,5 +1,5 @@
 """The protocol's words are spelt once: rason_msgs' Event.msg and Action.msg constants, which
-the Java side (rason.bridge.Protocol) must repeat exactly."""
+the Java side (rason.core.Protocol) must repeat exactly."""
 import jpype
 import pytest
 from rason_msgs.msg import Action, Event
@@ -7,7 +7,7 @@ from rason_msgs.msg import Action, Event
 from rason_bridge.jvm import start_jvm
 
 start_jvm()
-Protocol = jpype.JClass('rason.bridge.Protocol')
+Protocol = jpype.JClass('rason.core.Protocol')
 
 
 @pytest.mark.parametrize('name', ['ACTION_FEEDBACK', 'ACTION_STARTED', 'OK', 'CANCELLED', 'TIMEOUT',

@@ -233,18 +233,20 @@ def test_presence_loop_logs_a_failed_tick_and_goes_on():
 
 # ---- mind publisher ----------------------------------------------------------------------
 
-class MindBridge(object):
+class MindPort(object):
+    """Java's MindPort as the publisher uses it."""
+
     def __init__(self):
         self.periods = []
-        self.changes = []
+        self.minds = []
 
-    def setMindPeriodNanos(self, period):
+    def setPeriodNanos(self, period):
         self.periods.append(period)
 
-    def mindChanges(self):
-        return self.changes.pop(0) if self.changes else None
+    def changes(self):
+        return self.minds.pop(0) if self.minds else None
 
-    def mindInspectorUrl(self):
+    def inspectorUrl(self):
         return 'http://localhost:3272'
 
 
@@ -261,9 +263,9 @@ class Publisher(object):
 
 
 def test_mind_publisher_reads_only_while_subscribed_and_publishes_changes():
-    bridge, pub = MindBridge(), Publisher()
+    bridge, pub = MindPort(), Publisher()
     mind = MindPublisher(bridge, pub, '/r1/rason_mas', 0.5, lambda: 7, RuntimeError, Log())
-    bridge.changes = [[]]
+    bridge.minds = [[]]
     mind.step()
     assert bridge.periods == [] and pub.sent == []
     pub.subscribers = 1

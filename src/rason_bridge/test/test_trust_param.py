@@ -29,10 +29,9 @@ def test_malformed_values_are_refused(bad):
 
 
 def test_rules_decide_what_the_agent_takes_from_other_robots():
-    bridge = Bridge.get()
-    # named agents only: the Bridge is one per process, and other tests share it
+    bridge = Bridge()
     push_trust(bridge, trust_rules({'param_agent': {'tellHow': ['faulty']}, 'someone_else': {'achieve': 'none'}}))
-    trust = bridge.trust()
+    trust = bridge.fleet().trust()
     assert trust.allows('param_agent', 'faulty', 'tellHow')
     assert trust.allows('param_agent', 'faulty', 'untellHow')
     assert not trust.allows('param_agent', 'mallory', 'tellHow')
@@ -46,4 +45,4 @@ def test_rules_decide_what_the_agent_takes_from_other_robots():
                                           ({'Helper': {'tell': 'all'}}, 'Helper/tell')])
 def test_java_refusals_name_the_rule(value, where):
     with pytest.raises(ValueError, match=where):
-        push_trust(Bridge.get(), trust_rules(value))
+        push_trust(Bridge(), trust_rules(value))

@@ -11,12 +11,14 @@ from rason_bridge.ros_links import publisher
 class Inbound(object):
     """
     :param java_bridge: Java's ``Bridge``
+    :param channel: its ``RosTopicChannel``, which takes the fleet's messages and presence
     :param perceptions: the :class:`rason_bridge.perception_pump.PerceptionPump`
     :param now_ns: ``now_ns()`` -> the ROS time in nanoseconds
     """
 
-    def __init__(self, java_bridge, mas_id, perceptions, now_ns):
+    def __init__(self, java_bridge, channel, mas_id, perceptions, now_ns):
         self._bridge = java_bridge
+        self._channel = channel
         self._mas_id = mas_id
         self._perceptions = perceptions
         self._now_ns = now_ns
@@ -49,17 +51,17 @@ class Inbound(object):
 
     def _on_event(self, msg):
         # parsed and checked in Java; the publisher is the decomposer to watch after action_started
-        self._bridge.event(msg.agent, msg.event_type, msg.parameters, publisher(msg))
+        self._bridge.actions().event(msg.agent, msg.event_type, msg.parameters, publisher(msg))
 
     def _on_message(self, msg):
         if msg.sender_mas == self._mas_id or (msg.receiver_mas and msg.receiver_mas != self._mas_id):
             return  # our own, or for another process: the common case, kept out of Java
         try:
             # checked (authentication, then form) and parsed in Java
-            self._bridge.deliverMessage(msg.sender_mas, msg.sender, msg.receiver_mas, msg.receiver,
-                                        msg.performative, msg.content, msg.msg_id, msg.in_reply_to,
-                                        to_int64(msg.incarnation), to_int64(msg.sequence), to_int64(msg.stamp),
-                                        msg.key_id, msg.mac, publisher(msg))
+            self._channel.deliver(msg.sender_mas, msg.sender, msg.receiver_mas, msg.receiver,
+                                  msg.performative, msg.content, msg.msg_id, msg.in_reply_to,
+                                  to_int64(msg.incarnation), to_int64(msg.sequence), to_int64(msg.stamp),
+                                  msg.key_id, msg.mac, publisher(msg))
         except Exception as e:  # a bug must not kill the subscriber thread
             rospy.logerr('could not deliver message from %s (%s): %s', msg.sender, msg.sender_mas, e)
 
@@ -71,8 +73,8 @@ class Inbound(object):
                                    msg.mas_id, msg.incarnation)
             return
         try:
-            self._bridge.presenceAnnounced(msg.mas_id, msg.incarnation, msg.agents, msg.df_agents, msg.df_services,
-                                           msg.period, msg.leaving, to_int64(msg.sequence), to_int64(msg.stamp),
-                                           msg.key_id, msg.mac, publisher(msg))
+            self._channel.presenceAnnounced(msg.mas_id, msg.incarnation, msg.agents, msg.df_agents,
+                                            msg.df_services, msg.period, msg.leaving, to_int64(msg.sequence),
+                                            to_int64(msg.stamp), msg.key_id, msg.mac, publisher(msg))
         except Exception as e:
             rospy.logerr('could not handle presence of %r: %s', msg.mas_id, e)

@@ -1,5 +1,5 @@
-"""The one place that hands rason_mas's settings to Java (``rason.bridge.Bridge``, its
-``InputLimits`` and ``rason.infra.RasonLocalMAS``): a change of the Java API is made here only.
+"""The one place that hands rason_mas's settings to Java (the ports of ``rason.bridge.Bridge``,
+its ``InputLimits`` and its ``rason.infra.RasonLocalMAS``): a change of the Java API is made here only.
 No rospy; the JVM must be running (:func:`rason_bridge.jvm.start_jvm`)."""
 import jpype
 
@@ -22,8 +22,8 @@ class FleetKeyError(RuntimeError):
 
 
 def bridge():
-    """The process's one Java ``Bridge``."""
-    return jpype.JClass('rason.bridge.Bridge').get()
+    """A new Java ``Bridge``: the composition root of the agents this process hosts."""
+    return jpype.JClass('rason.bridge.Bridge')()
 
 
 def _nanos(settings, name):
@@ -36,24 +36,25 @@ def push(java_bridge, settings, mas_id, incarnation):
     :param settings: :data:`rason_bridge.params.Settings`
     :raises ParamError: a value Java refuses (``perception_manager``, ``trust``), saying which and why
     """
-    java_bridge.setActionTimeoutNanos(_nanos(settings, 'action_timeout'))
-    java_bridge.setPerceptionTtlNanos(_nanos(settings, 'perception_ttl'))
-    java_bridge.setPresenceTimeoutNanos(_nanos(settings, 'presence_timeout'))
-    java_bridge.setAskTimeoutNanos(_nanos(settings, 'ask_timeout'))
-    java_bridge.setDecomposerGraceNanos(_nanos(settings, 'decomposer_grace'))
-    java_bridge.setPresenceBeliefs(settings.presence_beliefs)
+    actions, perception, fleet = java_bridge.actions(), java_bridge.perception(), java_bridge.fleet()
+    actions.setTimeoutNanos(_nanos(settings, 'action_timeout'))
+    actions.setDecomposerGraceNanos(_nanos(settings, 'decomposer_grace'))
+    perception.setTtlNanos(_nanos(settings, 'perception_ttl'))
+    fleet.setPresenceTimeoutNanos(_nanos(settings, 'presence_timeout'))
+    fleet.setAskTimeoutNanos(_nanos(settings, 'ask_timeout'))
+    fleet.setPresenceBeliefs(settings.presence_beliefs)
     try:
-        java_bridge.setDefaultPerceptionManager(settings.perception_manager)
+        perception.setDefaultManager(settings.perception_manager)
     except jpype.JException as e:
         raise ParamError('perception_manager: %s' % e.getMessage())
     push_input_limits(java_bridge.limits(), settings)
     push_trust(java_bridge, settings.trust)
     if settings.mind_period > 0:
-        java_bridge.setMindLimits(settings.mind_max_items, settings.mind_max_chars)
-        java_bridge.setMindPeriodNanos(0)  # read only once somebody subscribes
+        java_bridge.mind().setLimits(settings.mind_max_items, settings.mind_max_chars)
+        java_bridge.mind().setPeriodNanos(0)  # read only once somebody subscribes
     # Between processes: the node name is the MAS id, the start time tells a restarted process from the one before.
-    java_bridge.setMasId(mas_id)
-    java_bridge.setIncarnation(incarnation)
+    fleet.setMasId(mas_id)
+    fleet.setIncarnation(incarnation)
 
 
 def push_input_limits(limits, settings):
@@ -69,7 +70,7 @@ def push_trust(java_bridge, rules):
     """
     for agent, group, who in rules:
         try:
-            java_bridge.setTrust(agent, group, who)
+            java_bridge.fleet().setTrust(agent, group, who)
         except jpype.JException as e:
             raise ParamError('trust: %s/%s: %s' % (agent, group, e.getMessage()))
 
@@ -80,24 +81,24 @@ def push_auth(java_bridge, settings):
     :raises FleetKeyError: authentication is required and the key cannot be loaded
     """
     if settings.fleet_auth == OFF:
-        java_bridge.fleetAuthOff()
+        java_bridge.fleet().authOff()
         return
-    java_bridge.setAuthWindowNanos(_nanos(settings, 'auth_window'))
+    java_bridge.fleet().setAuthWindowNanos(_nanos(settings, 'auth_window'))
     try:
         if settings.fleet_key is not None:
-            java_bridge.requireFleetKeyText(settings.fleet_key, '~fleet_key')
+            java_bridge.fleet().requireKeyText(settings.fleet_key, '~fleet_key')
         else:
-            java_bridge.requireFleetKeyFile(settings.fleet_key_file)
+            java_bridge.fleet().requireKeyFile(settings.fleet_key_file)
     except jpype.JException as e:
         raise FleetKeyError(str(e.getMessage()))
 
 
-def load_mas(settings, mas2j_path):
+def load_mas(java_bridge, settings, mas2j_path):
     """Load the project and create its agents (named with ``agent_prefix``); returns the Java MAS.
 
     :raises RuntimeError: the project cannot be loaded (Java's message)
     """
-    mas = jpype.JClass('rason.infra.RasonLocalMAS')()
+    mas = java_bridge.newMas()
     try:
         mas.setAgentPrefix(settings.agent_prefix)
         mas.load(mas2j_path)
@@ -109,4 +110,4 @@ def load_mas(settings, mas2j_path):
 
 def max_source_length():
     """The fixed bound on a perception source's name (Java's ``InputLimits.MAX_SOURCE_LENGTH``)."""
-    return int(jpype.JClass('rason.bridge.InputLimits').MAX_SOURCE_LENGTH)
+    return int(jpype.JClass('rason.core.InputLimits').MAX_SOURCE_LENGTH)

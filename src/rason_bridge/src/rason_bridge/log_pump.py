@@ -1,5 +1,5 @@
 """The log pump: the thread that writes the agents' ``.print`` and Jason's log lines, queued
-on the Java side (``rason.infra.RosLogHandler``), off the agents' threads, so printing never
+on the Java side (``rason.core.LogQueue``), off the agents' threads, so printing never
 makes an agent wait for Python; no rospy."""
 import threading
 
@@ -18,7 +18,7 @@ def level_name(java_level):
 
 class LogPump(object):
     """
-    :param lines: the Java ``RosLogHandler`` class (``drain(max)``, ``takeDropped()``)
+    :param lines: the Java ``LogQueue`` (``drain(max)``, ``takeDropped()``)
     :param write: ``write(level_name, text)`` writes one line
     """
 

@@ -61,6 +61,7 @@ class RasonMasNode(object):
         self.settings = s = settings
         self.mas_id = rospy.get_name()  # unique on a master, so it is the MAS id
         self._bridge = java_config.bridge()
+        self._channel = self._bridge.rosChannel()  # the fleet over /rason/messages and /rason/presence
         java_config.push(self._bridge, s, self.mas_id, time.time_ns())
         self._mas = None
         self._stopping = False
@@ -86,15 +87,15 @@ class RasonMasNode(object):
         self._outbound = OutboundPump(self._bridge.outbox().take, lambda item: items.dispatch(item, self), rospy.logerr)
         self._perceptions = PerceptionPump(
             PerceptionCoalescer(s.max_sources, java_config.max_source_length()),
-            self._bridge.perceive, self._bridge.releaseMemory, rospy.logwarn, rospy.logerr,
+            self._bridge.perception().perceive, self._bridge.releaseMemory, rospy.logwarn, rospy.logerr,
             alive=self._running)
-        self._inbound = Inbound(self._bridge, self.mas_id, self._perceptions, _ros_now_ns)
+        self._inbound = Inbound(self._bridge, self._channel, self.mas_id, self._perceptions, _ros_now_ns)
         self._mind = None
         if s.mind_period > 0:
             publisher = rospy.Publisher('jason/mind', MindState, queue_size=2, latch=True)
-            self._mind = MindPublisher(self._bridge, publisher, self.mas_id, s.mind_period, _ros_now_ns,
+            self._mind = MindPublisher(self._bridge.mind(), publisher, self.mas_id, s.mind_period, _ros_now_ns,
                                        rospy.ROSException, rospy.logdebug, alive=self._running)
-        self._log = LogPump(jpype.JClass('rason.infra.RosLogHandler'), lambda level, text: _WRITE[level](text))
+        self._log = LogPump(self._bridge.log(), lambda level, text: _WRITE[level](text))
         self._bridge.attach()  # the agents' outbox and log are ours from now on
         self._log.start()
 
@@ -108,7 +109,7 @@ class RasonMasNode(object):
 
         :raises RuntimeError: the project or all of its agents could not be loaded
         """
-        self._mas = java_config.load_mas(self.settings, mas2j_path)
+        self._mas = java_config.load_mas(self._bridge, self.settings, mas2j_path)
         names = [str(n) for n in self._bridge.agentNames()]
         if not names:
             raise RuntimeError('no agent of %s could be created (see the errors above)' % mas2j_path)
@@ -178,13 +179,13 @@ class RasonMasNode(object):
     # ---- presence -------------------------------------------------------------------
 
     def _presence_tick(self):
-        self._bridge.presenceTick(ros_links.linked_processes(self._message_pub))
-        self._bridge.decomposersTick(ros_links.event_publishers(self._inbound.events))
+        self._channel.presenceTick(ros_links.linked_processes(self._message_pub))
+        self._bridge.actions().decomposersTick(ros_links.event_publishers(self._inbound.events))
 
     def _publish_presence(self, leaving):
         # called under the presence loop's lock: signed in publishing order
         try:
-            self._presence_pub.publish(signed.presence(self._bridge, self.mas_id, self.settings.presence_period,
+            self._presence_pub.publish(signed.presence(self._channel, self._bridge.agentNames(), self.mas_id, self.settings.presence_period,
                                                        leaving))
         except Exception as e:  # topic closed at shutdown
             rospy.logdebug('presence not announced: %s', e)
@@ -197,7 +198,7 @@ class RasonMasNode(object):
         if outcome == NO_DECOMPOSER:
             rospy.logwarn('[%s] %s%s failed: no node subscribes to %s', agent, functor,
                           tuple(parameters), self._action_topic)
-            self._bridge.actionFailed(agent, action_id, Event.NO_DECOMPOSER)
+            self._bridge.actions().fail(agent, action_id, Event.NO_DECOMPOSER)
         elif outcome == DEFERRED:
             self._held.wake()
 
@@ -226,11 +227,11 @@ class RasonMasNode(object):
 
     def _action_not_sent(self, action, reason):
         if action.action != Action.CANCEL:  # a cancel nobody can hear has nothing left to stop
-            self._bridge.actionFailed(action.agent, action.action_id, reason)
+            self._bridge.actions().fail(action.agent, action.action_id, reason)
 
     def _sign_and_publish(self, msg):
         # the message sender calls it in publishing order
-        self._message_pub.publish(signed.sign_message(self._bridge, msg))
+        self._message_pub.publish(signed.sign_message(self._channel, msg))
 
     def _warn_unlinked(self, m):
         rospy.logwarn('[%s] %s to %s published although %s is still not connected after %.1f s: '

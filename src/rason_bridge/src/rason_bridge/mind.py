@@ -3,7 +3,7 @@
 :mod:`rason_bridge.params`.
 
 The snapshots are taken by the agents' own threads in Java (``RosAgArch``); the node's
-``rason_mind`` thread only asks ``Bridge.mindChanges()`` for them and publishes, and
+``rason_mind`` thread only asks the Java ``MindPort.changes()`` for them and publishes, and
 turns the reading off while nobody subscribes, so an unwatched robot pays nothing.
 """
 import genpy

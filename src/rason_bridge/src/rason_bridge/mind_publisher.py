@@ -7,7 +7,7 @@ from rason_bridge.mind import MindSwitch, to_msg
 
 class MindPublisher(object):
     """
-    :param java_bridge: Java's ``Bridge`` (``setMindPeriodNanos``, ``mindChanges``, ``mindInspectorUrl``)
+    :param mind: Java's ``MindPort`` (``setPeriodNanos``, ``changes``, ``inspectorUrl``)
     :param publisher: the jason/mind publisher (``get_num_connections``, ``publish``)
     :param period: seconds between two readings (more than 0)
     :param now_ns: ``now_ns()`` -> the ROS time in nanoseconds
@@ -15,8 +15,8 @@ class MindPublisher(object):
     :param alive: ``alive()`` -> False once the process shuts down
     """
 
-    def __init__(self, java_bridge, publisher, mas_id, period, now_ns, closed, debug, alive=lambda: True):
-        self._bridge = java_bridge
+    def __init__(self, mind, publisher, mas_id, period, now_ns, closed, debug, alive=lambda: True):
+        self._mind = mind
         self._publisher = publisher
         self._mas_id = mas_id
         self._period = period
@@ -42,13 +42,13 @@ class MindPublisher(object):
         """Switch the readings on or off as the subscribers come and go; publish what changed."""
         period = self._switch.update(self._publisher.get_num_connections())
         if period is not None:
-            self._bridge.setMindPeriodNanos(period)
+            self._mind.setPeriodNanos(period)
         if not self._switch.on:
             return
-        minds = self._bridge.mindChanges()
+        minds = self._mind.changes()
         if minds is not None:
             try:
                 self._publisher.publish(to_msg(self._mas_id, self._now_ns(), minds,
-                                               str(self._bridge.mindInspectorUrl())))
+                                               str(self._mind.inspectorUrl())))
             except self._closed as e:  # shutting down
                 self._debug('jason/mind not published: %s', e)

@@ -35,10 +35,15 @@ public final class RosTopicChannel implements FleetChannel {
         return outbox.offer(new Outbound.Announce());
     }
 
-    /** The authentication fields of an agent message the node is about to publish (sign in publishing order). */
-    public FleetAuth.Signed sign(Outbound.AgentMessage m) {
-        return port.sign(new WireMessage(port.masId(), m.sender(), m.receiverMas(), m.receiver(), m.performative(),
-                m.content(), m.msgId(), m.inReplyTo()));
+    /**
+     * The authentication fields of an agent message of ours the node is about to publish (the
+     * fields of an {@link Outbound.AgentMessage}); sign in publishing order, so that the sequence
+     * numbers arrive increasing.
+     */
+    public FleetAuth.Signed sign(String receiverMas, String sender, String receiver, String performative,
+            String content, String msgId, String inReplyTo) {
+        return port.sign(new WireMessage(port.masId(), sender, receiverMas, receiver, performative, content, msgId,
+                inReplyTo));
     }
 
     /** Our registrations, for the presence the node is about to announce. */
