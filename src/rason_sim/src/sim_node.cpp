@@ -25,8 +25,10 @@
 #include <thread>
 #include <vector>
 
+#include "rason_sim/camera_messages.h"
 #include "rason_sim/depth_camera.h"
 #include "rason_sim/diff_drive.h"
+#include "rason_sim/frames.h"
 #include "rason_sim/lockstep_acks.h"
 #include "rason_sim/pacing.h"
 #include "rason_sim/params.h"
@@ -63,18 +65,12 @@ int requireId(const mjModel* m, mjtObj type, const std::string& name) {
   return id;
 }
 
-geometry_msgs::Quaternion yawQuaternion(double yaw) {
-  geometry_msgs::Quaternion q;
-  q.z = std::sin(yaw / 2.0);
-  q.w = std::cos(yaw / 2.0);
-  return q;
-}
-
 class Simulator {
  public:
   Simulator(ros::NodeHandle& nh, ros::NodeHandle& pnh)
-      : params_(simParamsFrom(ParamReader(
-            [&pnh](const std::string& key, XmlRpc::XmlRpcValue& value) { return pnh.getParam(key, value); }))),
+      : params_(simParamsFrom(ParamReader([&pnh](const std::string& key, XmlRpc::XmlRpcValue& value) {
+          return pnh.getParam(key, value);
+        }))),
         world_(params_.world),
         lockstep_pace_(params_.camera_rate, params_.max_lockstep_factor) {
     rng_.reseed(static_cast<uint64_t>(params_.seed));
@@ -95,7 +91,8 @@ class Simulator {
                "at most %.1fx real time)%s%s%s", robots_.size(), params_.real_time_factor, params_.seed,
                params_.frame_ack_topic.c_str(), params_.max_lockstep_factor,
                params_.control_ack_topic.empty() ? "" : "; a moving robot's controller ticks (<robot>/",
-               params_.control_ack_topic.c_str(), params_.control_ack_topic.empty() ? "" : ") are waited for");
+               params_.control_ack_topic.c_str(),
+               params_.control_ack_topic.empty() ? "" : ") are waited for");
     else
       ROS_INFO("rason_sim: %zu robots, real-time factor %.2f (0 = as fast as possible), seed %d",
                robots_.size(), params_.real_time_factor, params_.seed);
@@ -267,19 +264,6 @@ class Simulator {
     robot.last_command = data_->time;
   }
 
-  // Kobuki's wheels run a velocity loop with zero steady-state error; MuJoCo's velocity
-  // servo is proportional only, so add an integral correction to its set point.
-  static double servoSetPoint(double target, double measured, double& integral, double dt) {
-    constexpr double kIntegralGain = 8.0, kMaxCorrection = 4.0;  // 1/s, rad/s
-    if (target == 0.0) {
-      integral = 0.0;  // stopping: no wind-up carried into the next motion
-      return 0.0;
-    }
-    integral = std::clamp(integral + (target - measured) * dt, -kMaxCorrection / kIntegralGain,
-                          kMaxCorrection / kIntegralGain);
-    return target + kIntegralGain * integral;
-  }
-
   void applyCommands(Robot& robot, double now, double dt) {
     if (robot.teleport) {
       robot.teleport = false;
@@ -432,105 +416,27 @@ class Simulator {
     sensor_msgs::PointCloud2 cloud;
     buildFrame(intrinsics_, rgb_.data(), depth_.data(), renderer_->nearPlane(), renderer_->farPlane(),
                params_.noise, rng_, image.data, depth_mm_, cloud_wanted ? &cloud.data : nullptr);
-    const ros::Time stamp(t);
-    const std::string frame = robot.config.name + "/camera_rgb_optical_frame";
-    image.header.stamp = stamp;
-    image.header.frame_id = frame;
-    image.width = intrinsics_.width;
-    image.height = intrinsics_.height;
-    image.encoding = "rgb8";
-    image.step = intrinsics_.width * 3;
+    std_msgs::Header header;
+    header.stamp = ros::Time(t);
+    header.frame_id = robot.config.name + "/camera_rgb_optical_frame";
+    describeImage(intrinsics_, header, image);
     robot.image_pub.publish(image);
-
-    if (robot.depth_pub.getNumSubscribers() > 0) publishDepth(robot, image.header);
-    if (cloud_wanted) publishCloud(robot, image.header, cloud);
-    publishInfo(robot, image.header);
-    return true;
-  }
-
-  void publishDepth(Robot& robot, const std_msgs::Header& header) {
-    sensor_msgs::Image depth;  // REP 118: 16UC1 in millimetres, 0 = no return
-    depth.header = header;
-    depth.width = intrinsics_.width;
-    depth.height = intrinsics_.height;
-    depth.encoding = "16UC1";
-    depth.is_bigendian = 0;
-    depth.step = intrinsics_.width * 2;
-    depth.data.resize(depth_mm_.size() * 2);
-    std::memcpy(depth.data.data(), depth_mm_.data(), depth.data.size());  // x86: little-endian
-    robot.depth_pub.publish(depth);
-  }
-
-  void publishCloud(Robot& robot, const std_msgs::Header& header, sensor_msgs::PointCloud2& cloud) {
-    cloud.header = header;
-    cloud.width = intrinsics_.width;
-    cloud.height = intrinsics_.height;
-    cloud.is_dense = false;
-    cloud.is_bigendian = false;
-    cloud.point_step = kPointStep;
-    cloud.row_step = kPointStep * intrinsics_.width;
-    const char* names[] = {"x", "y", "z", "rgb"};
-    for (int i = 0; i < 4; ++i) {
-      sensor_msgs::PointField f;
-      f.name = names[i];
-      f.offset = 4 * i;
-      f.datatype = sensor_msgs::PointField::FLOAT32;
-      f.count = 1;
-      cloud.fields.push_back(f);
+    if (robot.depth_pub.getNumSubscribers() > 0)
+      robot.depth_pub.publish(depthImage(intrinsics_, header, depth_mm_));
+    if (cloud_wanted) {
+      describeCloud(intrinsics_, header, cloud);
+      robot.cloud_pub.publish(cloud);
     }
-    robot.cloud_pub.publish(cloud);
-  }
-
-  void publishInfo(Robot& robot, const std_msgs::Header& header) {
-    sensor_msgs::CameraInfo info;
-    info.header = header;
-    info.width = intrinsics_.width;
-    info.height = intrinsics_.height;
-    info.distortion_model = "plumb_bob";
-    info.D.assign(5, 0.0);
-    info.K = {intrinsics_.fx, 0, intrinsics_.cx, 0, intrinsics_.fy, intrinsics_.cy, 0, 0, 1};
-    info.R = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-    info.P = {intrinsics_.fx, 0, intrinsics_.cx, 0, 0, intrinsics_.fy, intrinsics_.cy, 0, 0, 0, 1, 0};
-    robot.info_pub.publish(info);
-  }
-
-  // world -> <robot>/odom: where the robot's odometry frame lies in the world, so rviz (fixed
-  // frame world) can show each robot's odometry beside its true pose. At the start it is the
-  // start pose; a set_pose moves the robot, not its odometry, so the frame is worked out again.
-  static geometry_msgs::TransformStamped worldToOdom(const std::string& name, const Pose2D& world_base,
-                                                     const WheelOdometry& odom) {
-    const double yaw = world_base.yaw - odom.yaw();
-    const double c = std::cos(yaw), s = std::sin(yaw);
-    geometry_msgs::TransformStamped t;
-    t.header.stamp = ros::Time(0);
-    t.header.frame_id = "world";
-    t.child_frame_id = name + "/odom";
-    t.transform.translation.x = world_base.x - (c * odom.x() - s * odom.y());
-    t.transform.translation.y = world_base.y - (s * odom.x() + c * odom.y());
-    t.transform.rotation.z = std::sin(yaw / 2.0);
-    t.transform.rotation.w = std::cos(yaw / 2.0);
-    return t;
+    robot.info_pub.publish(cameraInfo(intrinsics_, header));
+    return true;
   }
 
   // /tf_static is latched: every message carries all static transforms.
   void publishStaticTransforms() {
     tf2_msgs::TFMessage tf;
     for (auto& robot : robots_) tf.transforms.push_back(robot->world_to_odom);
-    for (auto& robot : robots_) {
-      if (robot->camera < 0) continue;
-      // base_footprint -> optical frame (z forward, x right, y down).
-      geometry_msgs::TransformStamped t;
-      t.header.stamp = ros::Time(0);
-      t.header.frame_id = robot->config.name + "/base_footprint";
-      t.child_frame_id = robot->config.name + "/camera_rgb_optical_frame";
-      t.transform.translation.x = world_.camera.forward_m;
-      t.transform.translation.z = world_.camera.height_m;
-      t.transform.rotation.x = -0.5;
-      t.transform.rotation.y = 0.5;
-      t.transform.rotation.z = -0.5;
-      t.transform.rotation.w = 0.5;
-      tf.transforms.push_back(t);
-    }
+    for (auto& robot : robots_)
+      if (robot->camera >= 0) tf.transforms.push_back(baseToOpticalFrame(robot->config.name, world_.camera));
     tf_static_pub_.publish(tf);
   }
 
