@@ -18,170 +18,27 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <cstring>
 #include <memory>
-#include <mutex>
-#include <random>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
-#include "rason_sim/control_ticks.h"
+#include "rason_sim/camera_messages.h"
 #include "rason_sim/depth_camera.h"
 #include "rason_sim/diff_drive.h"
+#include "rason_sim/frames.h"
+#include "rason_sim/lockstep_acks.h"
+#include "rason_sim/pacing.h"
+#include "rason_sim/params.h"
 #include "rason_sim/renderer.h"
 #include "rason_sim/world.h"
 
 namespace rason_sim {
 namespace {
 
-// ---- parameters --------------------------------------------------------------------------
-
-double number(const XmlRpc::XmlRpcValue& v, const std::string& what) {
-  if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) return static_cast<double>(v);
-  if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) return static_cast<int>(v);
-  throw std::invalid_argument(what + " must be a number");
-}
-
-double field(XmlRpc::XmlRpcValue& s, const char* key, double fallback, const std::string& what) {
-  if (s.getType() != XmlRpc::XmlRpcValue::TypeStruct || !s.hasMember(key)) return fallback;
-  return number(s[key], what + "/" + key);
-}
-
-bool flag(XmlRpc::XmlRpcValue& s, const char* key, bool fallback) {
-  if (s.getType() != XmlRpc::XmlRpcValue::TypeStruct || !s.hasMember(key)) return fallback;
-  if (s[key].getType() != XmlRpc::XmlRpcValue::TypeBoolean)
-    throw std::invalid_argument(std::string(key) + " must be true or false");
-  return static_cast<bool>(s[key]);
-}
-
-XmlRpc::XmlRpcValue structParam(const ros::NodeHandle& pnh, const std::string& key) {
-  XmlRpc::XmlRpcValue value;
-  if (pnh.getParam(key, value) && value.getType() != XmlRpc::XmlRpcValue::TypeStruct)
-    throw std::invalid_argument("~" + key + " must be a dictionary");
-  return value;
-}
-
-WorldConfig worldFromParams(const ros::NodeHandle& pnh) {
-  WorldConfig world;
-  XmlRpc::XmlRpcValue room = structParam(pnh, "room");
-  world.room_x = field(room, "size_x", world.room_x, "~room");
-  world.room_y = field(room, "size_y", world.room_y, "~room");
-  world.wall_height = field(room, "wall_height", world.wall_height, "~room");
-  pnh.param("ambient", world.ambient, world.ambient);
-  pnh.param("brightness", world.brightness, world.brightness);
-  pnh.param("timestep", world.timestep, world.timestep);
-
-  XmlRpc::XmlRpcValue lights;
-  if (pnh.getParam("lights", lights)) {
-    if (lights.getType() != XmlRpc::XmlRpcValue::TypeArray)
-      throw std::invalid_argument("~lights must be a list of {x, y, z, intensity}");
-    for (int i = 0; i < lights.size(); ++i) {
-      LightConfig light;
-      light.x = field(lights[i], "x", light.x, "~lights");
-      light.y = field(lights[i], "y", light.y, "~lights");
-      light.z = field(lights[i], "z", light.z, "~lights");
-      light.intensity = field(lights[i], "intensity", light.intensity, "~lights");
-      world.lights.push_back(light);
-    }
-  } else {
-    world.lights.push_back(LightConfig());
-  }
-
-  XmlRpc::XmlRpcValue boxes;
-  if (pnh.getParam("boxes", boxes)) {
-    if (boxes.getType() != XmlRpc::XmlRpcValue::TypeArray)
-      throw std::invalid_argument("~boxes must be a list of {x, y, z, size_x, size_y, size_z, yaw}");
-    for (int i = 0; i < boxes.size(); ++i) {
-      BoxConfig box;
-      box.x = field(boxes[i], "x", box.x, "~boxes");
-      box.y = field(boxes[i], "y", box.y, "~boxes");
-      box.z = field(boxes[i], "z", box.z, "~boxes");
-      box.size_x = field(boxes[i], "size_x", box.size_x, "~boxes");
-      box.size_y = field(boxes[i], "size_y", box.size_y, "~boxes");
-      box.size_z = field(boxes[i], "size_z", box.size_z, "~boxes");
-      box.yaw = field(boxes[i], "yaw", box.yaw, "~boxes");
-      world.boxes.push_back(box);
-    }
-  }
-
-  XmlRpc::XmlRpcValue camera = structParam(pnh, "camera");
-  world.camera.width = static_cast<int>(field(camera, "width", world.camera.width, "~camera"));
-  world.camera.height = static_cast<int>(field(camera, "height", world.camera.height, "~camera"));
-  world.camera.horizontal_fov_deg = field(camera, "hfov", world.camera.horizontal_fov_deg, "~camera");
-  world.camera.height_m = field(camera, "height_m", world.camera.height_m, "~camera");
-
-  std::vector<std::string> names;
-  if (!pnh.getParam("robots", names)) throw std::invalid_argument("~robots (list of names) is not set");
-  for (const std::string& name : names) {
-    RobotConfig robot;
-    robot.name = name;
-    XmlRpc::XmlRpcValue s = structParam(pnh, name);
-    robot.start.x = field(s, "x", 0.0, "~" + name);
-    robot.start.y = field(s, "y", 0.0, "~" + name);
-    robot.start.yaw = field(s, "yaw", 0.0, "~" + name);
-    robot.camera = flag(s, "camera", false);
-    robot.left_marker = flag(s, "left_marker", false);
-    robot.right_marker = flag(s, "right_marker", false);
-    robot.back_marker = flag(s, "back_marker", false);
-    robot.slip.left = field(s, "left_slip", 0.0, "~" + name);
-    robot.slip.right = field(s, "right_slip", 0.0, "~" + name);
-    world.robots.push_back(robot);
-  }
-  validate(world);
-  return world;
-}
-
 // ---- one simulated robot ----------------------------------------------------------------
-
-// Lockstep: the stamp (sim s) of the last message published to a consumer and of the newest
-// one the consumer reported done, with the wall times of both: a camera frame and
-// vision_synth's robots_seen, stamped as the frame; odometry and the fault injector's
-// odom_filtered, stamped as the odometry. Reports arrive on a thread of their own, so
-// done_wall is when the report came, not when the simulation loop next looked.
-struct StampAck {
-  std::mutex mutex;
-  std::condition_variable reported;
-  double sent = -1.0, done = -1.0;
-  std::chrono::steady_clock::time_point sent_wall, done_wall;
-
-  bool isDone() const { return sent < 0.0 || done >= sent - 1e-6; }
-
-  void onSent(double t) {
-    std::lock_guard<std::mutex> lock(mutex);
-    sent = t;
-    sent_wall = std::chrono::steady_clock::now();
-  }
-
-  void onDone(double stamp) {
-    {
-      std::lock_guard<std::mutex> lock(mutex);
-      if (!isDone() && stamp >= sent - 1e-6) done_wall = std::chrono::steady_clock::now();
-      done = std::max(done, stamp);
-    }
-    reported.notify_all();
-  }
-};
-
-// Lockstep with the robot's controller: its reported ticks (see control_ticks.h), written by
-// the report thread and read by the simulation loop.
-struct ControlAck {
-  std::mutex mutex;
-  std::condition_variable reported;
-  ControlTicks ticks;
-
-  explicit ControlAck(double period) : ticks(period) {}
-
-  void onTick(double stamp, bool commands_motion) {
-    {
-      std::lock_guard<std::mutex> lock(mutex);
-      ticks.onTick(stamp, commands_motion);
-    }
-    reported.notify_all();
-  }
-};
 
 struct Robot {
   RobotConfig config;
@@ -208,114 +65,37 @@ int requireId(const mjModel* m, mjtObj type, const std::string& name) {
   return id;
 }
 
-// seconds as a steady_clock duration
-std::chrono::steady_clock::duration wallSeconds(double seconds) {
-  return std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
-}
-
-geometry_msgs::Quaternion yawQuaternion(double yaw) {
-  geometry_msgs::Quaternion q;
-  q.z = std::sin(yaw / 2.0);
-  q.w = std::cos(yaw / 2.0);
-  return q;
-}
-
-// Paces simulated time against the wall clock at a real-time factor, as a ceiling: when
-// the CPU falls behind, the lost wall time is written off instead of caught up, because a
-// burst of simulated seconds in a moment of wall time leaves every node that runs on
-// wall-clock CPU (camera pipeline, controllers, agents) seconds behind the world
-// (a helper found a robot in a frame 2 s old and turned past it).
-class WallPacer {
- public:
-  using Clock = std::chrono::steady_clock;
-  WallPacer(double real_time_factor, Clock::time_point start)
-      : factor_(real_time_factor), wall_base_(start) {}
-
-  // Sleeps until simulated time t is due; returns the wall seconds written off now (0
-  // when on time). Lateness within the slack is caught up, so sleep jitter does not
-  // slow the simulation down.
-  double wait(double t) {
-    const Clock::time_point due = wall_base_ + wallSeconds((t - t_base_) / factor_);
-    const Clock::time_point now = Clock::now();
-    const double late = std::chrono::duration<double>(now - due).count();
-    if (late > kSlack) {
-      wall_base_ = now;
-      t_base_ = t;
-      lost_ += late;
-      return late;
-    }
-    std::this_thread::sleep_until(due);
-    return 0.0;
-  }
-  double lost() const { return lost_; }
-
- private:
-  static constexpr double kSlack = 0.05;  // s of wall time
-  double factor_;
-  Clock::time_point wall_base_;
-  double t_base_ = 0.0;
-  double lost_ = 0.0;
-};
-
 class Simulator {
  public:
-  Simulator(ros::NodeHandle& nh, ros::NodeHandle& pnh) : world_(worldFromParams(pnh)) {
-    pnh.param("real_time_factor", real_time_factor_, 1.0);
-    pnh.param("odom_rate", odom_rate_, 50.0);
-    pnh.param("camera_rate", camera_rate_, 10.0);
-    pnh.param("clock_rate", clock_rate_, 100.0);
-    pnh.param("cmd_vel_timeout", cmd_vel_timeout_, 0.6);
-    pnh.param("max_sim_time", max_sim_time_, 0.0);
-    pnh.param("lockstep", lockstep_, real_time_factor_ == 0.0);
-    pnh.param("frame_ack_topic", frame_ack_topic_, std::string("robots_seen"));
-    pnh.param("frame_ack_timeout", frame_ack_timeout_, 2.0);
-    pnh.param("max_lockstep_factor", max_lockstep_factor_, 2.5);
-    pnh.param("control_ack_topic", control_ack_topic_, std::string("odom_commanded"));
-    pnh.param("odom_ack_topic", odom_ack_topic_, std::string("odom_filtered"));
-    pnh.param("control_rate", control_rate_, 50.0);
-    pnh.param("control_ack_timeout", control_ack_timeout_, 0.5);
-    int seed = 1;
-    pnh.param("seed", seed, 1);
-    rng_.reseed(static_cast<uint64_t>(seed));
-    XmlRpc::XmlRpcValue camera = structParam(pnh, "camera");
-    noise_.scale = field(camera, "depth_noise", 1.0, "~camera");
-    noise_.dropout = field(camera, "depth_dropout", 0.0, "~camera");
-    noise_.min_range = world_.camera.min_range;
-    noise_.max_range = world_.camera.max_range;
-    if (real_time_factor_ < 0.0 || odom_rate_ <= 0.0 || camera_rate_ <= 0.0 || clock_rate_ <= 0.0)
-      throw std::invalid_argument("rates must be > 0 and real_time_factor >= 0");
-    if (!(frame_ack_timeout_ > 0.0 && frame_ack_timeout_ < 3600.0))
-      throw std::invalid_argument("~frame_ack_timeout must be in (0, 3600) s");
-    if (!(max_lockstep_factor_ >= kMinLockstepFactor && max_lockstep_factor_ <= 1000.0))
-      throw std::invalid_argument("~max_lockstep_factor must be in [0.2, 1000]");
-    if (!(control_rate_ > 0.0 && control_rate_ <= 1000.0))
-      throw std::invalid_argument("~control_rate must be in (0, 1000] Hz");
-    if (!(control_ack_timeout_ > 0.0 && control_ack_timeout_ < 3600.0))
-      throw std::invalid_argument("~control_ack_timeout must be in (0, 3600) s");
-    if (noise_.dropout < 0.0 || noise_.dropout >= 1.0)
-      throw std::invalid_argument("~camera/depth_dropout must be in [0, 1)");
-
+  Simulator(ros::NodeHandle& nh, ros::NodeHandle& pnh)
+      : params_(simParamsFrom(ParamReader([&pnh](const std::string& key, XmlRpc::XmlRpcValue& value) {
+          return pnh.getParam(key, value);
+        }))),
+        world_(params_.world),
+        lockstep_pace_(params_.camera_rate, params_.max_lockstep_factor) {
+    rng_.reseed(static_cast<uint64_t>(params_.seed));
     loadModel();
     intrinsics_ = intrinsicsFor(world_.camera);
     clock_pub_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 10);
     tf_pub_ = nh.advertise<tf2_msgs::TFMessage>("/tf", 100);
     tf_static_pub_ = nh.advertise<tf2_msgs::TFMessage>("/tf_static", 1, true);
     for (const RobotConfig& config : world_.robots) setUpRobot(nh, config);
-    if (lockstep_) {
+    if (params_.lockstep) {
       ack_spinner_.reset(new ros::AsyncSpinner(1, &ack_queue_));
       ack_spinner_->start();
     }
     publishStaticTransforms();
-    if (lockstep_)
+    if (params_.lockstep)
       ROS_INFO("rason_sim: %zu robots, real-time factor %.2f (0 = as fast as possible), seed %d; "
                "lockstep: each camera frame waits for <robot>/%s of the one before (at factor 0 "
-               "at most %.1fx real time)%s%s%s", robots_.size(), real_time_factor_, seed,
-               frame_ack_topic_.c_str(), max_lockstep_factor_,
-               control_ack_topic_.empty() ? "" : "; a moving robot's controller ticks (<robot>/",
-               control_ack_topic_.c_str(), control_ack_topic_.empty() ? "" : ") are waited for");
+               "at most %.1fx real time)%s%s%s", robots_.size(), params_.real_time_factor, params_.seed,
+               params_.frame_ack_topic.c_str(), params_.max_lockstep_factor,
+               params_.control_ack_topic.empty() ? "" : "; a moving robot's controller ticks (<robot>/",
+               params_.control_ack_topic.c_str(),
+               params_.control_ack_topic.empty() ? "" : ") are waited for");
     else
       ROS_INFO("rason_sim: %zu robots, real-time factor %.2f (0 = as fast as possible), seed %d",
-               robots_.size(), real_time_factor_, seed);
+               robots_.size(), params_.real_time_factor, params_.seed);
   }
 
   ~Simulator() {
@@ -326,10 +106,10 @@ class Simulator {
   }
 
   void run() {
-    const double control_period = 1.0 / clock_rate_;
+    const double control_period = 1.0 / params_.clock_rate;
     const int substeps = std::max(1, static_cast<int>(std::lround(control_period / model_->opt.timestep)));
-    const auto wall_start = std::chrono::steady_clock::now();
-    WallPacer pacer(real_time_factor_, wall_start);
+    const auto wall_start = WallClock::now();
+    WallPacer pacer(params_.real_time_factor, wall_start);
     auto step_wall = wall_start;
     double next_odom = 0.0, next_camera = 0.0;
     while (ros::ok()) {
@@ -345,9 +125,9 @@ class Simulator {
       // off reads the odometry of t, at any pace
       if (t >= next_odom) {
         publishOdometry(t);
-        if (lockstep_)
+        if (params_.lockstep)
           for (auto& robot : robots_) awaitOdometryRelayed(*robot);
-        next_odom += 1.0 / odom_rate_;
+        next_odom += 1.0 / params_.odom_rate;
         if (next_odom < t) next_odom = t;  // never try to catch up with a burst
       }
       rosgraph_msgs::Clock clock;
@@ -355,31 +135,31 @@ class Simulator {
       clock_pub_.publish(clock);
       if (t >= next_camera) {
         for (auto& robot : robots_) {
-          if (lockstep_) awaitFrameDone(*robot);
-          if (publishCamera(*robot, t) && lockstep_ && robot->frame_ack_sub.getNumPublishers() > 0)
+          if (params_.lockstep) awaitFrameDone(*robot);
+          if (publishCamera(*robot, t) && params_.lockstep && robot->frame_ack_sub.getNumPublishers() > 0)
             robot->frame_ack.onSent(t);
         }
-        next_camera += 1.0 / camera_rate_;
+        next_camera += 1.0 / params_.camera_rate;
         if (next_camera < t) next_camera = t;
       }
-      if (max_sim_time_ > 0.0 && t >= max_sim_time_) break;
-      if (lockstep_ && real_time_factor_ == 0.0 && hasCamera()) {
+      if (params_.max_sim_time > 0.0 && t >= params_.max_sim_time) break;
+      if (params_.lockstep && params_.real_time_factor == 0.0 && hasCamera()) {
         // Not flat out between frames: a burst of simulated time while the frame is being
         // processed would leave the controllers and agents (wall-clock CPU) behind the world
         // as much as a lagging camera did. A step takes its share of the wall time a frame
         // needs; until every camera's consumer is up (nodes starting), about real time.
-        const double factor = framesConsumed() ? lockstep_factor_ : 1.0;
-        std::this_thread::sleep_until(step_wall + wallSeconds(control_period / factor));
-        step_wall = std::chrono::steady_clock::now();
-      } else if (real_time_factor_ > 0.0) {
+        std::this_thread::sleep_until(
+            step_wall + wallSeconds(lockstep_pace_.stepWallSeconds(control_period, framesConsumed())));
+        step_wall = WallClock::now();
+      } else if (params_.real_time_factor > 0.0) {
         const double dropped = pacer.wait(t);
         if (dropped > 0.0)
           ROS_WARN_THROTTLE(10.0, "rason_sim: the CPU cannot keep up with real-time factor %.2f; "
                             "%.1f s of wall time lost so far are not caught up (the simulation "
-                            "runs slower instead of in bursts)", real_time_factor_, pacer.lost());
+                            "runs slower instead of in bursts)", params_.real_time_factor, pacer.lost());
       }
     }
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    const double wall = std::chrono::duration<double>(WallClock::now() - wall_start).count();
     ROS_INFO("rason_sim: simulated %.1f s in %.1f s wall time (real-time factor %.2f; %.1f s of "
              "wall time lost to a busy CPU)", data_->time, wall, wall > 0 ? data_->time / wall : 0.0,
              pacer.lost());
@@ -444,20 +224,20 @@ class Simulator {
       robot->depth_pub = nh.advertise<sensor_msgs::Image>(n + "/camera/depth_registered/image_raw", 2);
       robot->cloud_pub = nh.advertise<sensor_msgs::PointCloud2>(n + "/camera/depth_registered/points", 2);
       robot->info_pub = nh.advertise<sensor_msgs::CameraInfo>(n + "/camera/rgb/camera_info", 2);
-      if (lockstep_)
+      if (params_.lockstep)
         robot->frame_ack_sub = subscribeReports<rason_msgs::RobotSightings>(
-            nh, n + "/" + frame_ack_topic_, 10,
+            nh, n + "/" + params_.frame_ack_topic, 10,
             [raw](const rason_msgs::RobotSightings::ConstPtr& msg) { raw->frame_ack.onDone(msg->header.stamp.toSec()); });
     }
-    if (lockstep_ && !odom_ack_topic_.empty())
+    if (params_.lockstep && !params_.odom_ack_topic.empty())
       robot->odom_ack_sub = subscribeReports<nav_msgs::Odometry>(
-          nh, n + "/" + odom_ack_topic_, 50,
+          nh, n + "/" + params_.odom_ack_topic, 50,
           [raw](const nav_msgs::Odometry::ConstPtr& msg) { raw->odom_ack.onDone(msg->header.stamp.toSec()); });
-    if (lockstep_ && !control_ack_topic_.empty()) {
-      robot->control_ack.reset(new ControlAck(1.0 / control_rate_));
+    if (params_.lockstep && !params_.control_ack_topic.empty()) {
+      robot->control_ack.reset(new ControlAck(1.0 / params_.control_rate));
       ControlAck* ack = robot->control_ack.get();
       robot->control_ack_sub = subscribeReports<nav_msgs::Odometry>(
-          nh, n + "/" + control_ack_topic_, 50, [ack](const nav_msgs::Odometry::ConstPtr& msg) {
+          nh, n + "/" + params_.control_ack_topic, 50, [ack](const nav_msgs::Odometry::ConstPtr& msg) {
             const auto& v = msg->twist.twist;
             ack->onTick(msg->header.stamp.toSec(), v.linear.x != 0.0 || v.angular.z != 0.0);
           });
@@ -484,19 +264,6 @@ class Simulator {
     robot.last_command = data_->time;
   }
 
-  // Kobuki's wheels run a velocity loop with zero steady-state error; MuJoCo's velocity
-  // servo is proportional only, so add an integral correction to its set point.
-  static double servoSetPoint(double target, double measured, double& integral, double dt) {
-    constexpr double kIntegralGain = 8.0, kMaxCorrection = 4.0;  // 1/s, rad/s
-    if (target == 0.0) {
-      integral = 0.0;  // stopping: no wind-up carried into the next motion
-      return 0.0;
-    }
-    integral = std::clamp(integral + (target - measured) * dt, -kMaxCorrection / kIntegralGain,
-                          kMaxCorrection / kIntegralGain);
-    return target + kIntegralGain * integral;
-  }
-
   void applyCommands(Robot& robot, double now, double dt) {
     if (robot.teleport) {
       robot.teleport = false;
@@ -514,7 +281,7 @@ class Simulator {
       publishStaticTransforms();
     }
     // Like kobuki_node, stop when commands stop arriving.
-    const bool fresh = now - robot.last_command <= cmd_vel_timeout_;
+    const bool fresh = now - robot.last_command <= params_.cmd_vel_timeout;
     const WheelSpeeds speeds = groundSpeeds(
         wheelSpeedsFor(fresh ? robot.linear : 0.0, fresh ? robot.angular : 0.0, world_.base),
         robot.config.slip);
@@ -587,17 +354,13 @@ class Simulator {
   // and the agents reading it, behind the world: seen in simulated time, a frame takes at
   // most one camera period to process at any speed.
   void awaitFrameDone(Robot& robot) {
-    const double took = awaitDone(robot.frame_ack, frame_ack_timeout_);
+    const double took = robot.frame_ack.awaitDone(params_.frame_ack_timeout);
     if (took > 0.0) {
-      // the pace for the next period: a camera period in (a little more than) the wall
-      // time the consumer took for this frame, smoothed
-      frame_wall_ = frame_wall_ <= 0.0 ? took : 0.8 * frame_wall_ + 0.2 * took;
-      lockstep_factor_ = std::clamp(1.0 / (camera_rate_ * kLockstepMargin * std::max(frame_wall_, 1e-4)),
-                                    kMinLockstepFactor, max_lockstep_factor_);
+      lockstep_pace_.onFrameProcessed(took);  // the pace for the next period
     } else if (took < 0.0) {
       ROS_WARN_THROTTLE(10.0, "rason_sim: no %s/%s for the frame within %.1f s (wall); going on "
-                        "without it", robot.config.name.c_str(), frame_ack_topic_.c_str(),
-                        frame_ack_timeout_);
+                        "without it", robot.config.name.c_str(), params_.frame_ack_topic.c_str(),
+                        params_.frame_ack_timeout);
     }
   }
 
@@ -607,23 +370,10 @@ class Simulator {
   void awaitOdometryRelayed(Robot& robot) {
     if (robot.odom_ack_sub.getNumPublishers() == 0) return;
     robot.odom_ack.onSent(data_->time);
-    if (awaitDone(robot.odom_ack, control_ack_timeout_) < 0.0)
+    if (robot.odom_ack.awaitDone(params_.control_ack_timeout) < 0.0)
       ROS_WARN_THROTTLE(10.0, "rason_sim: no %s/%s for the odometry at %.2f s within %.1f s "
                         "(wall); going on without it", robot.config.name.c_str(),
-                        odom_ack_topic_.c_str(), data_->time, control_ack_timeout_);
-  }
-
-  // Waits (wall clock, up to timeout) until ack's consumer has reported the last message
-  // sent to it done. Returns the wall seconds it took, 0 when nothing was outstanding, or
-  // -1 when it timed out (the message is then given up).
-  static double awaitDone(StampAck& ack, double timeout) {
-    std::unique_lock<std::mutex> lock(ack.mutex);
-    if (ack.sent < 0.0) return 0.0;
-    const auto deadline = std::chrono::steady_clock::now() + wallSeconds(timeout);
-    const bool done = ack.reported.wait_until(lock, deadline, [&ack] { return ack.isDone(); });
-    ack.sent = -1.0;
-    if (!done) return -1.0;
-    return std::max(std::chrono::duration<double>(ack.done_wall - ack.sent_wall).count(), 1e-9);
+                        params_.odom_ack_topic.c_str(), data_->time, params_.control_ack_timeout);
   }
 
   // Lockstep with the robot's controller (control_ticks.h): before stepping from now, wait
@@ -631,30 +381,27 @@ class Simulator {
   // stopped the robot, for the zero twist to reach the base (through the fault injector).
   void awaitControlTick(Robot& robot, double now) {
     ControlAck& ack = *robot.control_ack;
-    const auto deadline = std::chrono::steady_clock::now() + wallSeconds(control_ack_timeout_);
-    std::unique_lock<std::mutex> lock(ack.mutex);
-    if (!ack.reported.wait_until(lock, deadline, [&ack, now] { return !ack.ticks.tickDue(now); })) {
+    const auto deadline = WallClock::now() + wallSeconds(params_.control_ack_timeout);
+    double due = 0.0;
+    if (!ack.awaitTick(now, deadline, &due)) {
       ROS_WARN_THROTTLE(10.0, "rason_sim: no %s/%s for the control tick due at %.2f s within %.1f s "
                         "(wall); going on without waiting for that controller until it reports a "
-                        "motion again", robot.config.name.c_str(), control_ack_topic_.c_str(),
-                        ack.ticks.last() + ack.ticks.period(), control_ack_timeout_);
-      ack.ticks.giveUp();
+                        "motion again", robot.config.name.c_str(), params_.control_ack_topic.c_str(),
+                        due, params_.control_ack_timeout);
       return;
     }
-    if (!ack.ticks.stopPending()) return;
-    lock.unlock();
+    if (!ack.stopPending()) return;
     // cmd_vel is served by the global queue, which this loop spins
     while (robot.linear != 0.0 || robot.angular != 0.0) {
-      if (std::chrono::steady_clock::now() >= deadline) {
+      if (WallClock::now() >= deadline) {
         ROS_WARN_THROTTLE(10.0, "rason_sim: %s's controller stopped it at %.2f s, but no zero "
                           "%s/cmd_vel came within %.1f s (wall); going on", robot.config.name.c_str(),
-                          now, robot.config.name.c_str(), control_ack_timeout_);
+                          now, robot.config.name.c_str(), params_.control_ack_timeout);
         break;
       }
       ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(0.001));
     }
-    lock.lock();
-    ack.ticks.stopReached();
+    ack.stopReached();
   }
 
   // Renders and publishes robot's camera at t; false when it has none or nobody looks.
@@ -668,130 +415,36 @@ class Simulator {
     sensor_msgs::Image image;
     sensor_msgs::PointCloud2 cloud;
     buildFrame(intrinsics_, rgb_.data(), depth_.data(), renderer_->nearPlane(), renderer_->farPlane(),
-               noise_, rng_, image.data, depth_mm_, cloud_wanted ? &cloud.data : nullptr);
-    const ros::Time stamp(t);
-    const std::string frame = robot.config.name + "/camera_rgb_optical_frame";
-    image.header.stamp = stamp;
-    image.header.frame_id = frame;
-    image.width = intrinsics_.width;
-    image.height = intrinsics_.height;
-    image.encoding = "rgb8";
-    image.step = intrinsics_.width * 3;
+               params_.noise, rng_, image.data, depth_mm_, cloud_wanted ? &cloud.data : nullptr);
+    std_msgs::Header header;
+    header.stamp = ros::Time(t);
+    header.frame_id = robot.config.name + "/camera_rgb_optical_frame";
+    describeImage(intrinsics_, header, image);
     robot.image_pub.publish(image);
-
-    if (robot.depth_pub.getNumSubscribers() > 0) publishDepth(robot, image.header);
-    if (cloud_wanted) publishCloud(robot, image.header, cloud);
-    publishInfo(robot, image.header);
-    return true;
-  }
-
-  void publishDepth(Robot& robot, const std_msgs::Header& header) {
-    sensor_msgs::Image depth;  // REP 118: 16UC1 in millimetres, 0 = no return
-    depth.header = header;
-    depth.width = intrinsics_.width;
-    depth.height = intrinsics_.height;
-    depth.encoding = "16UC1";
-    depth.is_bigendian = 0;
-    depth.step = intrinsics_.width * 2;
-    depth.data.resize(depth_mm_.size() * 2);
-    std::memcpy(depth.data.data(), depth_mm_.data(), depth.data.size());  // x86: little-endian
-    robot.depth_pub.publish(depth);
-  }
-
-  void publishCloud(Robot& robot, const std_msgs::Header& header, sensor_msgs::PointCloud2& cloud) {
-    cloud.header = header;
-    cloud.width = intrinsics_.width;
-    cloud.height = intrinsics_.height;
-    cloud.is_dense = false;
-    cloud.is_bigendian = false;
-    cloud.point_step = kPointStep;
-    cloud.row_step = kPointStep * intrinsics_.width;
-    const char* names[] = {"x", "y", "z", "rgb"};
-    for (int i = 0; i < 4; ++i) {
-      sensor_msgs::PointField f;
-      f.name = names[i];
-      f.offset = 4 * i;
-      f.datatype = sensor_msgs::PointField::FLOAT32;
-      f.count = 1;
-      cloud.fields.push_back(f);
+    if (robot.depth_pub.getNumSubscribers() > 0)
+      robot.depth_pub.publish(depthImage(intrinsics_, header, depth_mm_));
+    if (cloud_wanted) {
+      describeCloud(intrinsics_, header, cloud);
+      robot.cloud_pub.publish(cloud);
     }
-    robot.cloud_pub.publish(cloud);
-  }
-
-  void publishInfo(Robot& robot, const std_msgs::Header& header) {
-    sensor_msgs::CameraInfo info;
-    info.header = header;
-    info.width = intrinsics_.width;
-    info.height = intrinsics_.height;
-    info.distortion_model = "plumb_bob";
-    info.D.assign(5, 0.0);
-    info.K = {intrinsics_.fx, 0, intrinsics_.cx, 0, intrinsics_.fy, intrinsics_.cy, 0, 0, 1};
-    info.R = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-    info.P = {intrinsics_.fx, 0, intrinsics_.cx, 0, 0, intrinsics_.fy, intrinsics_.cy, 0, 0, 0, 1, 0};
-    robot.info_pub.publish(info);
-  }
-
-  // world -> <robot>/odom: where the robot's odometry frame lies in the world, so rviz (fixed
-  // frame world) can show each robot's odometry beside its true pose. At the start it is the
-  // start pose; a set_pose moves the robot, not its odometry, so the frame is worked out again.
-  static geometry_msgs::TransformStamped worldToOdom(const std::string& name, const Pose2D& world_base,
-                                                     const WheelOdometry& odom) {
-    const double yaw = world_base.yaw - odom.yaw();
-    const double c = std::cos(yaw), s = std::sin(yaw);
-    geometry_msgs::TransformStamped t;
-    t.header.stamp = ros::Time(0);
-    t.header.frame_id = "world";
-    t.child_frame_id = name + "/odom";
-    t.transform.translation.x = world_base.x - (c * odom.x() - s * odom.y());
-    t.transform.translation.y = world_base.y - (s * odom.x() + c * odom.y());
-    t.transform.rotation.z = std::sin(yaw / 2.0);
-    t.transform.rotation.w = std::cos(yaw / 2.0);
-    return t;
+    robot.info_pub.publish(cameraInfo(intrinsics_, header));
+    return true;
   }
 
   // /tf_static is latched: every message carries all static transforms.
   void publishStaticTransforms() {
     tf2_msgs::TFMessage tf;
     for (auto& robot : robots_) tf.transforms.push_back(robot->world_to_odom);
-    for (auto& robot : robots_) {
-      if (robot->camera < 0) continue;
-      // base_footprint -> optical frame (z forward, x right, y down).
-      geometry_msgs::TransformStamped t;
-      t.header.stamp = ros::Time(0);
-      t.header.frame_id = robot->config.name + "/base_footprint";
-      t.child_frame_id = robot->config.name + "/camera_rgb_optical_frame";
-      t.transform.translation.x = world_.camera.forward_m;
-      t.transform.translation.z = world_.camera.height_m;
-      t.transform.rotation.x = -0.5;
-      t.transform.rotation.y = 0.5;
-      t.transform.rotation.z = -0.5;
-      t.transform.rotation.w = 0.5;
-      tf.transforms.push_back(t);
-    }
+    for (auto& robot : robots_)
+      if (robot->camera >= 0) tf.transforms.push_back(baseToOpticalFrame(robot->config.name, world_.camera));
     tf_static_pub_.publish(tf);
   }
 
-  WorldConfig world_;
-  double real_time_factor_ = 1.0, odom_rate_ = 50.0, camera_rate_ = 10.0, clock_rate_ = 100.0;
-  double cmd_vel_timeout_ = 0.6, max_sim_time_ = 0.0;
-  bool lockstep_ = false;
-  ros::CallbackQueue ack_queue_;               // frame reports, served by ack_spinner_
+  const SimParams params_;
+  const WorldConfig& world_;
+  ros::CallbackQueue ack_queue_;  // lockstep's reports, served by ack_spinner_
   std::unique_ptr<ros::AsyncSpinner> ack_spinner_;
-  double lockstep_factor_ = 1.0;  // the pace at factor 0 with lockstep, from frame_wall_
-  double frame_wall_ = 0.0;       // s of wall time a frame's processing takes (smoothed)
-  // The camera is not the only consumer that runs on wall-clock CPU: the decomposer's
-  // control loop and the agents fall behind the world when a run alone goes much faster
-  // than real time (at 4.35x a 10 degree turn ended 13-16 degrees on), so lockstep's pace
-  // has a ceiling.
-  double max_lockstep_factor_ = 2.5;
-  static constexpr double kLockstepMargin = 1.1, kMinLockstepFactor = 0.2;
-  std::string frame_ack_topic_;
-  double frame_ack_timeout_ = 2.0;
-  std::string control_ack_topic_;  // a controller's tick reports, <robot>/this; empty: none
-  std::string odom_ack_topic_;     // the odometry relayed to the controller; empty: none
-  double control_rate_ = 50.0;     // Hz of those ticks (motion_decomp's ~rate)
-  double control_ack_timeout_ = 0.5;
-  DepthNoise noise_;
+  LockstepPace lockstep_pace_;  // at factor 0 with lockstep
   PixelNoise rng_;
   mjModel* model_ = nullptr;
   mjData* data_ = nullptr;

@@ -80,6 +80,31 @@ TEST(WheelOdometry, SlipShortensATurnInPlace) {
   EXPECT_NEAR(truth.yaw, 0.96 * kPi / 2, 1e-9);
 }
 
+TEST(WheelServo, AWheelAtItsSpeedGetsItsSpeed) {
+  double integral = 0.0;
+  EXPECT_EQ(servoSetPoint(5.0, 5.0, integral, 0.01), 5.0);
+  EXPECT_EQ(integral, 0.0);
+}
+
+TEST(WheelServo, ALaggingWheelIsPushedHarderUpToALimit) {
+  double integral = 0.0;
+  const double first = servoSetPoint(5.0, 4.0, integral, 0.01);  // 1 rad/s short for 10 ms
+  EXPECT_NEAR(first, 5.0 + 8.0 * 0.01, 1e-12);
+  const double second = servoSetPoint(5.0, 4.0, integral, 0.01);
+  EXPECT_GT(second, first);
+  for (int i = 0; i < 1000; ++i) servoSetPoint(5.0, 0.0, integral, 0.01);  // stalled
+  EXPECT_NEAR(servoSetPoint(5.0, 0.0, integral, 0.01), 5.0 + 4.0, 1e-12);
+  EXPECT_NEAR(servoSetPoint(-5.0, 0.0, integral, 10.0), -5.0 - 4.0, 1e-12);  // and backwards
+}
+
+TEST(WheelServo, StoppingCarriesNoWindUpIntoTheNextMotion) {
+  double integral = 0.0;
+  for (int i = 0; i < 100; ++i) servoSetPoint(5.0, 0.0, integral, 0.01);
+  EXPECT_EQ(servoSetPoint(0.0, 3.0, integral, 0.01), 0.0);
+  EXPECT_EQ(integral, 0.0);
+  EXPECT_EQ(servoSetPoint(2.0, 2.0, integral, 0.01), 2.0);
+}
+
 TEST(WorldConfig, WheelSlipMustBeInRange) {
   WorldConfig world;
   RobotConfig robot;

@@ -83,4 +83,17 @@ class WheelOdometry {
   double x_ = 0.0, y_ = 0.0, yaw_ = 0.0, linear_ = 0.0, angular_ = 0.0;
 };
 
+// Kobuki's wheels run a velocity loop with zero steady-state error; MuJoCo's velocity
+// servo is proportional only, so add an integral correction to its set point.
+inline double servoSetPoint(double target, double measured, double& integral, double dt) {
+  constexpr double kIntegralGain = 8.0, kMaxCorrection = 4.0;  // 1/s, rad/s
+  if (target == 0.0) {
+    integral = 0.0;  // stopping: no wind-up carried into the next motion
+    return 0.0;
+  }
+  integral = std::clamp(integral + (target - measured) * dt, -kMaxCorrection / kIntegralGain,
+                        kMaxCorrection / kIntegralGain);
+  return target + kIntegralGain * integral;
+}
+
 }  // namespace rason_sim
