@@ -1,5 +1,6 @@
 package rason.bridge;
 
+import rason.core.ManualClock;
 import rason.core.Protocol;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static rason.bridge.RunningAgents.await;
@@ -29,7 +30,8 @@ class PreemptionTest {
     private static final long SECOND = RunningAgents.SECOND;
     private static final long WAIT_MS = RunningAgents.WAIT_MS;
 
-    private final Bridge bridge = new Bridge();
+    private final ManualClock wall = new ManualClock(1_000 * SECOND);
+    private final Bridge bridge = new Bridge(wall);
     @RegisterExtension
     final RunningAgents agents = new RunningAgents(bridge);
 
@@ -134,7 +136,7 @@ class PreemptionTest {
         bridge.actions().decomposersTick(new String[] { "/motion_decomp" });
         assertEquals(1, arch.actions().pendingCount(), "its decomposer is still there");
         bridge.actions().decomposersTick(new String[] { "/other" }); // first seen missing
-        Thread.sleep(1);
+        wall.advance(1_000_000);
         bridge.actions().decomposersTick(new String[] { "/other" });
         assertEquals(new Outbound.Cancel("mover", move.actionId(), Protocol.DECOMPOSER_LOST), next(Outbound.Cancel.class));
         await("-!go with decomposer_lost", () -> believes(arch, "go_failed"));
@@ -146,7 +148,7 @@ class PreemptionTest {
         bridge.actions().setDecomposerGraceNanos(0);
         next(Outbound.Action.class);
         bridge.actions().decomposersTick(new String[0]);
-        Thread.sleep(1);
+        wall.advance(1_000_000);
         bridge.actions().decomposersTick(new String[0]);
         assertEquals(1, arch.actions().pendingCount());
     }

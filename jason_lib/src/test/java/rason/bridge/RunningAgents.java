@@ -104,6 +104,14 @@ public final class RunningAgents implements AfterEachCallback {
         }
     }
 
+    /**
+     * Gives the agents nothing for ms of wall time: for tests of what an agent does when input
+     * stops coming (its own timers run on), never to wait for something to happen.
+     */
+    public static void noInputFor(long ms, String why) throws InterruptedException {
+        Thread.sleep(ms);
+    }
+
     /** The next item the agents queued for ROS, of the given kind. */
     public <T extends Outbound> T next(Class<T> kind) throws InterruptedException {
         Outbound item = bridge.outbox().take(WAIT_MS);

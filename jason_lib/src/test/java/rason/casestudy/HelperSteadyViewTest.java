@@ -66,7 +66,7 @@ class HelperSteadyViewTest {
     void aFrameReadTwiceIsNotASteadyViewTheNextFramesAre() throws Exception {
         // a busy CPU holds the frame of a robot still turning; the helper reads it, then waits
         RosAgArch arch = startLooking(5000, "robot(faulty,1,2,3)", frame(1, NOW_MS));
-        Thread.sleep(400); // several settleTimes: reading frame 1 again would have settled on it
+        RunningAgents.noInputFor(400, "several settleTimes: reading frame 1 again would have settled on it");
         // the robot has stopped elsewhere; new frames show it there
         framesUntilSeen(arch, 2, NOW_MS + 100, "robot(faulty,10,2.5,30)");
         assertTrue(believes(arch, "seen(10,2.5,30)"), "the view is the robot at rest, not the old frame");

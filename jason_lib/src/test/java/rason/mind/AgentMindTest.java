@@ -124,7 +124,9 @@ class AgentMindTest {
     void offMeansNoSnapshotAndTurningOnReadsASleepingAgent() throws Exception {
         RosAgArch arch = agents.start(dir, "idle", "ready.\n");
         await("started", () -> believes(arch, "ready"));
-        Thread.sleep(200); // positive check below: it sleeps with nothing read while off
+        // cycles run while off (a perception, then a belief from it): none of them reads the mind
+        bridge.perception().perceive("test", new String[] { "tick(1)" }, 100 * SECOND);
+        await("a cycle with the mind off", () -> believes(arch, "tick(1)"));
         assertNull(rason.MindAgArch.of(arch.getTS()).recorder().latest());
         assertNull(bridge.mind().changes());
 
