@@ -10,6 +10,10 @@ import random
 import string
 from collections import namedtuple
 
+from rason_msgs.msg import Event
+
+FEEDBACK, STARTED = Event.ACTION_FEEDBACK, Event.ACTION_STARTED
+
 Case = namedtuple('Case', 'name perceptions events good reasons')
 
 #: What the bridge refuses by default (rason.bridge.InputLimits).
@@ -122,19 +126,19 @@ def case(name, seed=13, huge_names=200, huge_name_chars=1 << 20):
                                    + [kept('malformed')])],
                     [], [kept('malformed')], [r"dropped perception 'temp\(' from source 'hostile_malformed'"])
     if name == 'bad_events':
-        return Case('bad_events', [], [('nobody', 'action_feedback', ['OK', '1']),
-                                       (None, 'action_feedback', ['OK', str(2 ** 31)]),
-                                       (None, 'action_feedback', ['OK', '1e3']),
-                                       (None, 'action_started', ['-1'])]
-                    + [(None, 'action_feedback', ['OK', i]) for i in BAD_IDS]
-                    + [(None, 'action_started', [i]) for i in BAD_IDS]
-                    + [(None, 'action_feedback', []), (None, 'action_feedback', ['OK']), (None, 'explode', ['OK', '1']),
-                       (None, '', []), (None, 'action_feedback', ['', '5']),
-                       (None, 'action_feedback', ['x' * 100000, '7']), ('', 'action_feedback', ['OK', '1'])],
+        return Case('bad_events', [], [('nobody', FEEDBACK, ['OK', '1']),
+                                       (None, FEEDBACK, ['OK', str(2 ** 31)]),
+                                       (None, FEEDBACK, ['OK', '1e3']),
+                                       (None, STARTED, ['-1'])]
+                    + [(None, FEEDBACK, ['OK', i]) for i in BAD_IDS]
+                    + [(None, STARTED, [i]) for i in BAD_IDS]
+                    + [(None, FEEDBACK, []), (None, FEEDBACK, ['OK']), (None, 'explode', ['OK', '1']),
+                       (None, '', []), (None, FEEDBACK, ['', '5']),
+                       (None, FEEDBACK, ['x' * 100000, '7']), ('', FEEDBACK, ['OK', '1'])],
                     [], [r"ignoring events for agent 'nobody'", r'action id %d outside 1\.\.%d' % (2 ** 31, 2 ** 31 - 1),
                          r"non-integer action id '1e3'", r'action_started with action id -1 outside'])
     if name == 'huge_agent_names':
-        return Case('huge_agent_names', [], [(n, 'action_feedback', ['OK', '1'])
+        return Case('huge_agent_names', [], [(n, FEEDBACK, ['OK', '1'])
                                              for n in names(rng, huge_names, huge_name_chars)],
                     [], [r'ignoring events for agent .*not hosted here'])
     # many_sources: a source heard before a flood of new source names keeps being heard

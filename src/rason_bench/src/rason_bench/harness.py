@@ -64,7 +64,7 @@ class Harness(object):
             report = None
         if report is None and msg.action != 'ping':
             return
-        self._events.publish(Event(agent=msg.agent, event_type='action_feedback',
+        self._events.publish(Event(agent=msg.agent, event_type=Event.ACTION_FEEDBACK,
                                    parameters=['OK', str(msg.action_id)]))
         if isinstance(report, protocol.Reacted):
             report = protocol.reaction(report, received_ms)
