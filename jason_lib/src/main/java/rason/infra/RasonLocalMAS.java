@@ -75,10 +75,11 @@ public class RasonLocalMAS extends RunLocalMAS {
         addInitArg("no-rmi", true);
         addInitArg("no-mbean", true);
         addInitArg("no-mindinspector", true);
-        if (!(Config.get() instanceof RasonConfig)) // Jason's mind inspector on loopback (mindinspector option)
-            Config.setClassFactory(RasonConfig.class.getName());
-        Config.get().put(Config.START_WEB_MI, "false");
+        RasonConfig.install(); // before the parser: aslSourcePath's $jasonJar/... entries are resolved there
         setupLogger();
+        if (RasonConfig.shortUnnamedVarsWanted() && !RasonConfig.shortUnnamedVarsApplied())
+            Logger.getLogger(RasonLocalMAS.class.getName()).warning("Jason's terms were used before its configuration"
+                    + " was installed (rason.infra.RasonConfig.install): unnamed variables print in the long form");
 
         File file = new File(mas2jPath).getCanonicalFile();
         if (!file.isFile())
@@ -103,12 +104,11 @@ public class RasonLocalMAS extends RunLocalMAS {
             if (src.startsWith("file:"))
                 src = src.substring("file:".length());
             // the project's directory, then its aslSourcePath (as Jason does, but never the working directory)
-            List<File> tried = projectInclude().candidates(src, null);
-            File asl = tried.stream().filter(File::isFile).findFirst().orElse(null);
-            if (asl == null)
+            ProjectInclude.Resolution asl = projectInclude().resolve(src, null);
+            if (asl.found() == null)
                 throw new JasonException("agent '" + ap.name + "': source file not found: "
-                        + (tried.size() == 1 ? tried.get(0) : "tried " + tried));
-            ap.setSource(asl.getPath());
+                        + (asl.tried().size() == 1 ? asl.tried().get(0) : "tried " + asl.tried()));
+            ap.setSource(asl.found());
             if (!ap.getAgArchClasses().contains(ARCH_CLASS))
                 ap.addArchClass(ARCH_CLASS);
             checkClasses(ap);
@@ -180,6 +180,8 @@ public class RasonLocalMAS extends RunLocalMAS {
     }
 
     static {
+        // before any Jason term is made (Jason reads some of its settings once, then)
+        RasonConfig.install();
         // before Jason makes its own include directive: the parser and .include then use this one
         DirectiveProcessor.registerDirective("include", ProjectInclude.class);
     }
@@ -201,11 +203,13 @@ public class RasonLocalMAS extends RunLocalMAS {
         return DirectiveProcessor.getDirective("include") instanceof ProjectInclude;
     }
 
-    /** The project's aslSourcePath entries as Jason keeps them (without the working-directory variants it adds). */
+    /** The project's aslSourcePath entries as Jason keeps them (without the variants it adds under its root). */
     private static List<String> projectSourcePaths() {
+        List<String> all = project.getSourcePaths().getPaths();
+        String root = project.getSourcePaths().getRoot() + "/";
         List<String> out = new ArrayList<>();
-        for (String p : project.getSourcePaths().getPaths())
-            if (!p.contains("/file:"))
+        for (String p : all)
+            if (!(p.startsWith(root) && all.contains(p.substring(root.length()))))
                 out.add(p);
         return out;
     }

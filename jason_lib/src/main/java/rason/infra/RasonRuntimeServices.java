@@ -1,6 +1,5 @@
 package rason.infra;
 
-import java.io.File;
 import java.util.Collection;
 import java.util.List;
 
@@ -53,15 +52,14 @@ public class RasonRuntimeServices extends LocalRuntimeServices {
     public String createAgent(String agName, String agSource, String agClass, List<String> archClasses,
             ClassParameters bbPars, Settings stts, Agent father) throws Exception {
         String source = agSource;
-        if (source != null && !source.isBlank() && !source.startsWith("$") && RasonLocalMAS.hasProjectInclude()) {
+        if (source != null && !source.isBlank() && RasonLocalMAS.hasProjectInclude()) {
             String creatorSource = father == null ? null : father.getASLSrc();
             String name = source.startsWith("file:") ? source.substring("file:".length()) : source;
-            List<File> tried = RasonLocalMAS.projectInclude().candidates(name, creatorSource);
-            File found = tried.stream().filter(File::isFile).findFirst().orElse(null);
-            if (found == null)
+            ProjectInclude.Resolution found = RasonLocalMAS.projectInclude().resolve(name, creatorSource);
+            if (found.found() == null)
                 throw new JasonException("cannot create agent " + agName + ": source '" + agSource
-                        + "' not found; tried " + tried, ASSyntax.createAtom("source_not_found"));
-            source = found.getPath();
+                        + "' not found; tried " + found.tried(), ASSyntax.createAtom("source_not_found"));
+            source = found.found();
         }
         return super.createAgent(freeName(Bridge.get().registry().prefixed(agName)), source, agClass, archClasses,
                 bbPars, stts, father);
