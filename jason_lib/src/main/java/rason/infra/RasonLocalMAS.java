@@ -8,6 +8,8 @@ import java.util.Collection;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.logging.Handler;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -15,6 +17,9 @@ import java.util.logging.Logger;
 import jason.JasonException;
 import jason.architecture.AgArch;
 import jason.asSemantics.Agent;
+import jason.asSyntax.NumberTermImpl;
+import jason.asSyntax.PlanLibrary;
+import jason.asSyntax.Trigger;
 import jason.bb.BeliefBase;
 import jason.asSyntax.directives.DirectiveProcessor;
 import jason.asSyntax.directives.Include;
@@ -22,7 +27,6 @@ import jason.infra.local.LocalAgArch;
 import jason.infra.local.RunLocalMAS;
 import jason.mas2j.AgentParameters;
 import jason.runtime.RuntimeServicesFactory;
-import jason.util.Config;
 
 import rason.RosAgArch;
 import rason.bridge.Bridge;
@@ -43,6 +47,7 @@ public class RasonLocalMAS extends RunLocalMAS {
     public static final String ARCH_CLASS = RosAgArch.class.getName();
 
     private String agentPrefix = "";
+    private final AtomicBoolean finishing = new AtomicBoolean(false); // a .stopMAS was made
 
     public RasonLocalMAS() {
         super();
@@ -296,9 +301,30 @@ public class RasonLocalMAS extends RunLocalMAS {
         root.setLevel(Level.INFO);
     }
 
-    /** .stopMAS: ask the rospy node to shut down (which stops the agents) instead of System.exit. */
+    /**
+     * .stopMAS: asks the rospy node to shut down (which stops the agents) instead of
+     * System.exit. .stopMAS(T) first gives the agents T ms of their clock (ROS time,
+     * as {@code .wait}), telling each {@code +jag_shutting_down(T)}, as Jason does.
+     * As in Jason, the first .stopMAS decides: a later one is ignored.
+     */
     @Override
     public void finish(int deadline, boolean stopJVM, int exitValue) {
+        if (finishing.getAndSet(true))
+            return;
+        if (deadline <= 0) {
+            requestStop(exitValue);
+            return;
+        }
+        for (LocalAgArch ag : new ArrayList<>(getAgs().values())) {
+            Trigger shuttingDown = PlanLibrary.TE_JAG_SHUTTING_DOWN.clone();
+            shuttingDown.getLiteral().addTerm(new NumberTermImpl(deadline));
+            ag.getTS().getC().addExternalEv(shuttingDown);
+            ag.wakeUpSense();
+        }
+        Agent.getScheduler().schedule(() -> requestStop(exitValue), deadline, TimeUnit.MILLISECONDS);
+    }
+
+    private static void requestStop(int exitValue) {
         if (!Bridge.get().outbox().offer(new Outbound.Stop(exitValue)))
             Bridge.log(Level.WARNING, ".stopMAS ignored: no rason_mas node runs this MAS");
     }
