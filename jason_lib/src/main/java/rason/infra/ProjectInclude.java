@@ -29,6 +29,8 @@ import jason.util.Config;
  * (it drops the leading '/' of that path), and takes relative source paths from
  * the working directory, which under roslaunch is ROS_HOME. Jason's
  * {@code $jasonJar/...} paths are resolved as Jason resolves them. A file found
+ * that the working directory names the same keeps its name as written (as Jason
+ * shows it, run in the project's folder); others get their full path. A file found
  * nowhere is reported with every path tried; URLs are left to Jason.
  */
 public class ProjectInclude extends Include {
@@ -113,9 +115,18 @@ public class ProjectInclude extends Include {
             if (!tried.contains(candidate))
                 tried.add(candidate);
             if (readable(candidate))
-                return new Resolution(candidate, tried);
+                return new Resolution(isUrl(candidate) ? candidate : asWritten(name, candidate), tried);
         }
         return new Resolution(null, tried);
+    }
+
+    /**
+     * The name as the program wrote it if, taken from the working directory, it is the
+     * file found: Jason reads the same file, and shows its name (code_src, url(...)) as
+     * Jason's runner run in the project's folder does. Otherwise the path found.
+     */
+    private static String asWritten(String name, String found) {
+        return canonical(new File(name)).getPath().equals(found) ? name : found;
     }
 
     /** The directories (paths, or URLs inside a jar) a relative name is looked for in, in order. */
@@ -123,7 +134,7 @@ public class ProjectInclude extends Include {
         Set<String> dirs = new LinkedHashSet<>();
         if (includingSource != null && isJarUrl(includingSource))
             dirs.add(includingSource.substring(0, includingSource.lastIndexOf('/')));
-        File including = localFile(includingSource);
+        File including = includingFile(includingSource);
         if (including != null && including.getParentFile() != null)
             dirs.add(canonical(including.getParentFile()).getPath());
         File project = projectDir;
@@ -191,6 +202,21 @@ public class ProjectInclude extends Include {
         synchronized (failures) {
             return new ArrayList<>(failures);
         }
+    }
+
+    /**
+     * The file a directive or .create_agent is in, as Jason read it: a relative name is
+     * one kept as written ({@link #asWritten}), from the working directory; null for a URL.
+     */
+    private static File includingFile(String source) {
+        if (source == null || source.isEmpty())
+            return null;
+        String s = unquote(source);
+        if (s.startsWith("file:"))
+            s = s.substring("file:".length());
+        else if (isUrl(s))
+            return null;
+        return new File(s).getAbsoluteFile();
     }
 
     /** A path or file: URL as a file, relative ones taken from the project's directory; null for other URLs. */

@@ -1,5 +1,6 @@
 package rason.infra;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -185,5 +186,31 @@ class ProjectIncludeTest {
         for (String p : new String[] { "agent 'a'", "'$jasonJar/test/jason/inc/no_such.asl' not found",
                 "jar:file:" + jar + "!/test/jason/inc/no_such.asl" })
             assertTrue(e.getMessage().contains(p), e.getMessage() + " should say " + p);
+    }
+
+    @Test
+    void aSourceTheWorkingDirectoryNamesTooKeepsItsNameAsWritten() throws Exception {
+        // Jason's runner, run in the project's folder, shows sources as the program names them
+        Path inWorkingDir = Files.createTempDirectory(Path.of("target"), "cwd");
+        try {
+            Path relative = Path.of("").toAbsolutePath().relativize(inWorkingDir.toAbsolutePath());
+            Files.writeString(inWorkingDir.resolve("a.asl"), "{ include(\"common.asl\") }");
+            Files.writeString(inWorkingDir.resolve("common.asl"), "next_to_it.");
+            String cwd = Path.of("").toAbsolutePath().toString();
+            Agent ag = load("MAS p { agents: a ./" + relative + "/a.asl; aslSourcePath: \"" + cwd + "\"; }");
+            assertEquals("file:./" + relative + "/a.asl", ag.getASLSrc());
+            assertTrue(believes(ag, "next_to_it"), "the include next to it is found from the working directory");
+        } finally {
+            for (String f : new String[] { "a.asl", "common.asl" })
+                Files.deleteIfExists(inWorkingDir.resolve(f));
+            Files.deleteIfExists(inWorkingDir);
+        }
+    }
+
+    @Test
+    void aSourceTheWorkingDirectoryDoesNotNameGetsItsFullPath() throws Exception {
+        write("robots/a.asl", "x.");
+        Agent ag = load("MAS p { agents: a ./robots/a.asl; }");
+        assertEquals("file:" + dir.toRealPath().resolve("robots/a.asl"), ag.getASLSrc());
     }
 }
