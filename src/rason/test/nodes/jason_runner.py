@@ -30,11 +30,17 @@ class Finished(object):
         return '\n'.join(self.output)
 
 
-def run_jason(mas2j, timeout):
-    """Run ``mas2j`` under Jason's runner in the project's folder until it stops (.stopMAS)."""
+def jason_command(mas2j):
+    """The command that runs ``mas2j`` under Jason's runner, and the folder to run it in (the project's)."""
     cmd = ['java', '-Djava.awt.headless=true', '-cp', os.pathsep.join(jason_lib_classpath()),
            'jason.infra.local.RunLocalMAS', os.path.basename(mas2j), '--no-net', '--log-conf', JASON_LOG_CONF]
-    return _run(cmd, os.path.dirname(os.path.abspath(mas2j)), timeout)
+    return cmd, os.path.dirname(os.path.abspath(mas2j))
+
+
+def run_jason(mas2j, timeout):
+    """Run ``mas2j`` under Jason's runner in the project's folder until it stops (.stopMAS)."""
+    cmd, cwd = jason_command(mas2j)
+    return _run(cmd, cwd, timeout)
 
 
 def run_rason_mas(mas2j, name, timeout, **params):

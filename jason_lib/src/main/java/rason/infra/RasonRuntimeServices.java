@@ -66,7 +66,7 @@ public class RasonRuntimeServices extends LocalRuntimeServices {
     }
 
     /**
-     * As Jason names a new agent (name, name1, name2, ...), but a name an agent of another robot
+     * As Jason names a new agent (name, name_1, name_2, ...), but a name an agent of another robot
      * has is taken too. Only for .create_agent: the project's own agents keep their names (a clash
      * with another robot is logged, see the naming rule).
      */
@@ -74,7 +74,7 @@ public class RasonRuntimeServices extends LocalRuntimeServices {
         Collection<String> taken = Bridge.get().allNames();
         String name = baseName;
         for (int n = 1; taken.contains(name) || masRunner.getAg(name) != null; n++)
-            name = baseName + n;
+            name = baseName + "_" + n;
         return name;
     }
 
