@@ -56,7 +56,8 @@ def jvm_options():
 def start_jvm(classpath=None):
     """Start the JVM if this process has none yet; returns the class path in use.
 
-    ``-Xrs`` leaves SIGINT/SIGTERM to rospy, so Ctrl-C stops the node cleanly.
+    ``-Xrs`` leaves SIGINT/SIGTERM to rospy, so Ctrl-C stops the node cleanly. Jason's
+    configuration is then completed as Jason's runner completes it (``RasonConfig.install``).
     """
     if jpype.isJVMStarted():
         return None
@@ -64,4 +65,7 @@ def start_jvm(classpath=None):
     if os.path.isfile(JPYPE_SUPPORT_JAR):
         cp.append(JPYPE_SUPPORT_JAR)
     jpype.startJVM(*jvm_options(), classpath=cp, convertStrings=False, interrupt=False)
+    # Jason's configuration as Jason's runner makes it, before any Jason term: Jason reads some
+    # of its settings (shortUnnamedVars) once, when its term classes are first used
+    jpype.JClass('rason.infra.RasonConfig').install()
     return cp

@@ -8,6 +8,8 @@ import java.util.Collection;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.logging.Handler;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -15,6 +17,9 @@ import java.util.logging.Logger;
 import jason.JasonException;
 import jason.architecture.AgArch;
 import jason.asSemantics.Agent;
+import jason.asSyntax.NumberTermImpl;
+import jason.asSyntax.PlanLibrary;
+import jason.asSyntax.Trigger;
 import jason.bb.BeliefBase;
 import jason.asSyntax.directives.DirectiveProcessor;
 import jason.asSyntax.directives.Include;
@@ -22,7 +27,6 @@ import jason.infra.local.LocalAgArch;
 import jason.infra.local.RunLocalMAS;
 import jason.mas2j.AgentParameters;
 import jason.runtime.RuntimeServicesFactory;
-import jason.util.Config;
 
 import rason.MindAgArch;
 import rason.RosAgArch;
@@ -46,6 +50,7 @@ public class RasonLocalMAS extends RunLocalMAS {
 
     private final MasHost host;
     private String agentPrefix = "";
+    private final AtomicBoolean finishing = new AtomicBoolean(false); // a .stopMAS was made
 
     /** A MAS whose agents run in host (the one RuntimeServices of the process is this MAS's). */
     public RasonLocalMAS(MasHost host) {
@@ -82,10 +87,11 @@ public class RasonLocalMAS extends RunLocalMAS {
         addInitArg("no-rmi", true);
         addInitArg("no-mbean", true);
         addInitArg("no-mindinspector", true);
-        if (!(Config.get() instanceof RasonConfig)) // Jason's mind inspector on loopback (mindinspector option)
-            Config.setClassFactory(RasonConfig.class.getName());
-        Config.get().put(Config.START_WEB_MI, "false");
+        RasonConfig.install(); // before the parser: aslSourcePath's $jasonJar/... entries are resolved there
         setupLogger();
+        if (RasonConfig.shortUnnamedVarsWanted() && !RasonConfig.shortUnnamedVarsApplied())
+            Logger.getLogger(RasonLocalMAS.class.getName()).warning("Jason's terms were used before its configuration"
+                    + " was installed (rason.infra.RasonConfig.install): unnamed variables print in the long form");
 
         File file = new File(mas2jPath).getCanonicalFile();
         if (!file.isFile())
@@ -110,12 +116,11 @@ public class RasonLocalMAS extends RunLocalMAS {
             if (src.startsWith("file:"))
                 src = src.substring("file:".length());
             // the project's directory, then its aslSourcePath (as Jason does, but never the working directory)
-            List<File> tried = projectInclude().candidates(src, null);
-            File asl = tried.stream().filter(File::isFile).findFirst().orElse(null);
-            if (asl == null)
+            ProjectInclude.Resolution asl = projectInclude().resolve(src, null);
+            if (asl.found() == null)
                 throw new JasonException("agent '" + ap.name + "': source file not found: "
-                        + (tried.size() == 1 ? tried.get(0) : "tried " + tried));
-            ap.setSource(asl.getPath());
+                        + (asl.tried().size() == 1 ? asl.tried().get(0) : "tried " + asl.tried()));
+            ap.setSource(asl.found());
             if (!ap.getAgArchClasses().contains(MIND_ARCH_CLASS))
                 ap.addArchClass(MIND_ARCH_CLASS);
             if (!ap.getAgArchClasses().contains(ARCH_CLASS))
@@ -189,6 +194,8 @@ public class RasonLocalMAS extends RunLocalMAS {
     }
 
     static {
+        // before any Jason term is made (Jason reads some of its settings once, then)
+        RasonConfig.install();
         // before Jason makes its own include directive: the parser and .include then use this one
         DirectiveProcessor.registerDirective("include", ProjectInclude.class);
     }
@@ -210,11 +217,13 @@ public class RasonLocalMAS extends RunLocalMAS {
         return DirectiveProcessor.getDirective("include") instanceof ProjectInclude;
     }
 
-    /** The project's aslSourcePath entries as Jason keeps them (without the working-directory variants it adds). */
+    /** The project's aslSourcePath entries as Jason keeps them (without the variants it adds under its root). */
     private static List<String> projectSourcePaths() {
+        List<String> all = project.getSourcePaths().getPaths();
+        String root = project.getSourcePaths().getRoot() + "/";
         List<String> out = new ArrayList<>();
-        for (String p : project.getSourcePaths().getPaths())
-            if (!p.contains("/file:"))
+        for (String p : all)
+            if (!(p.startsWith(root) && all.contains(p.substring(root.length()))))
                 out.add(p);
         return out;
     }
@@ -301,9 +310,30 @@ public class RasonLocalMAS extends RunLocalMAS {
         root.setLevel(Level.INFO);
     }
 
-    /** .stopMAS: ask the rospy node to shut down (which stops the agents) instead of System.exit. */
+    /**
+     * .stopMAS: asks the rospy node to shut down (which stops the agents) instead of
+     * System.exit. .stopMAS(T) first gives the agents T ms of their clock (ROS time,
+     * as {@code .wait}), telling each {@code +jag_shutting_down(T)}, as Jason does.
+     * As in Jason, the first .stopMAS decides: a later one is ignored.
+     */
     @Override
     public void finish(int deadline, boolean stopJVM, int exitValue) {
+        if (finishing.getAndSet(true))
+            return;
+        if (deadline <= 0) {
+            requestStop(exitValue);
+            return;
+        }
+        for (LocalAgArch ag : new ArrayList<>(getAgs().values())) {
+            Trigger shuttingDown = PlanLibrary.TE_JAG_SHUTTING_DOWN.clone();
+            shuttingDown.getLiteral().addTerm(new NumberTermImpl(deadline));
+            ag.getTS().getC().addExternalEv(shuttingDown);
+            ag.wakeUpSense();
+        }
+        Agent.getScheduler().schedule(() -> requestStop(exitValue), deadline, TimeUnit.MILLISECONDS);
+    }
+
+    private void requestStop(int exitValue) {
         if (!host.requestStop(exitValue))
             Logger.getLogger("rason.infra").warning(".stopMAS ignored: no rason_mas node runs this MAS");
     }

@@ -1,6 +1,5 @@
 package rason.infra;
 
-import java.io.File;
 import java.util.Collection;
 import java.util.List;
 
@@ -61,22 +60,21 @@ public class RasonRuntimeServices extends LocalRuntimeServices implements rason.
     public String createAgent(String agName, String agSource, String agClass, List<String> archClasses,
             ClassParameters bbPars, Settings stts, Agent father) throws Exception {
         String source = agSource;
-        if (source != null && !source.isBlank() && !source.startsWith("$") && RasonLocalMAS.hasProjectInclude()) {
+        if (source != null && !source.isBlank() && RasonLocalMAS.hasProjectInclude()) {
             String creatorSource = father == null ? null : father.getASLSrc();
             String name = source.startsWith("file:") ? source.substring("file:".length()) : source;
-            List<File> tried = RasonLocalMAS.projectInclude().candidates(name, creatorSource);
-            File found = tried.stream().filter(File::isFile).findFirst().orElse(null);
-            if (found == null)
+            ProjectInclude.Resolution found = RasonLocalMAS.projectInclude().resolve(name, creatorSource);
+            if (found.found() == null)
                 throw new JasonException("cannot create agent " + agName + ": source '" + agSource
-                        + "' not found; tried " + tried, ASSyntax.createAtom("source_not_found"));
-            source = found.getPath();
+                        + "' not found; tried " + found.tried(), ASSyntax.createAtom("source_not_found"));
+            source = found.found();
         }
         return super.createAgent(freeName(host.fleet().prefixed(agName)), source, agClass, archClasses,
                 bbPars, stts, father);
     }
 
     /**
-     * As Jason names a new agent (name, name1, name2, ...), but a name an agent of another robot
+     * As Jason names a new agent (name, name_1, name_2, ...), but a name an agent of another robot
      * has is taken too. Only for .create_agent: the project's own agents keep their names (a clash
      * with another robot is logged, see the naming rule).
      */
@@ -84,7 +82,7 @@ public class RasonRuntimeServices extends LocalRuntimeServices implements rason.
         Collection<String> taken = host.fleet().allNames();
         String name = baseName;
         for (int n = 1; taken.contains(name) || masRunner.getAg(name) != null; n++)
-            name = baseName + n;
+            name = baseName + "_" + n;
         return name;
     }
 

@@ -111,17 +111,17 @@ class AgentLifecycleTest {
                 """);
         await("both helpers made", () -> believes("r1_boss", "made(_)") || believes("r1_boss", "failed(_)"));
         assertFalse(believes("r1_boss", "failed(_)"), () -> mas.getAg("r1_boss").getTS().getAg().getBB().toString());
-        // r1_helper is robot8's: the first one is r1_helper1, the second (named by Jason after the variable) r1_helper2
-        await("both helpers run", () -> bridge.fleet().hosts("r1_helper1") && bridge.fleet().hosts("r1_helper2"));
-        assertTrue(believes("r1_boss", "made(\"r1_helper2\")"));
+        // r1_helper is robot8's: the first one is r1_helper_1, the second (named by Jason after the variable) r1_helper_2
+        await("both helpers run", () -> bridge.fleet().hosts("r1_helper_1") && bridge.fleet().hosts("r1_helper_2"));
+        assertTrue(believes("r1_boss", "made(\"r1_helper_2\")"));
         assertFalse(bridge.fleet().hosts("r1_helper"));
-        await("helper1 started", () -> mas.getAg("r1_helper1") != null && believes("r1_helper1", "started"));
+        await("helper1 started", () -> mas.getAg("r1_helper_1") != null && believes("r1_helper_1", "started"));
         assertTrue(drainOutbox().stream().anyMatch(o -> o instanceof Outbound.Announce),
                 "the new agents are announced without waiting for the next period");
         List<String> announced = List.of(bridge.agentNames());
-        assertTrue(announced.containsAll(List.of("r1_boss", "r1_helper1", "r1_helper2")), announced.toString());
-        assertTrue(bridge.fleet().allNames().containsAll(List.of("far_worker", "r1_helper", "r1_helper1")));
-        await("registered", () -> bridge.fleet().directory().search("helping").equals(List.of("r1_helper1", "r1_helper2")));
+        assertTrue(announced.containsAll(List.of("r1_boss", "r1_helper_1", "r1_helper_2")), announced.toString());
+        assertTrue(bridge.fleet().allNames().containsAll(List.of("far_worker", "r1_helper", "r1_helper_1")));
+        await("registered", () -> bridge.fleet().directory().search("helping").equals(List.of("r1_helper_1", "r1_helper_2")));
     }
 
     @Test
