@@ -204,7 +204,7 @@ public final class Bridge implements MasHost {
 
     /** Names of the hosted agents, sorted (the node announces them). */
     public String[] agentNames() {
-        return fleet.localAgents();
+        return fleet.names().localAgents();
     }
 
     /**

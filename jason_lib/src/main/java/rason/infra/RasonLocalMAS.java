@@ -75,7 +75,7 @@ public class RasonLocalMAS extends RunLocalMAS {
             throw new JasonException("agent prefix '" + prefix + "' must start with a lower-case letter and hold only"
                     + " letters, digits and _ (agent names are Jason atoms), e.g. robot1_");
         agentPrefix = p;
-        host.fleet().setAgentPrefix(p);
+        host.fleet().names().setAgentPrefix(p);
     }
 
     /**
@@ -306,7 +306,7 @@ public class RasonLocalMAS extends RunLocalMAS {
         Logger root = Logger.getLogger("");
         for (Handler h : root.getHandlers())
             root.removeHandler(h);
-        root.addHandler(new RosLogHandler(host.log(), host.fleet()::hosts));
+        root.addHandler(new RosLogHandler(host.log(), host.fleet().names()::hosts));
         root.setLevel(Level.INFO);
     }
 

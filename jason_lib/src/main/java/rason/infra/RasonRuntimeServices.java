@@ -40,7 +40,7 @@ public class RasonRuntimeServices extends LocalRuntimeServices implements rason.
 
     @Override
     public Collection<String> getAgentsNames() {
-        return host.fleet().allNames();
+        return host.fleet().names().allNames();
     }
 
     @Override
@@ -69,7 +69,7 @@ public class RasonRuntimeServices extends LocalRuntimeServices implements rason.
                         + "' not found; tried " + found.tried(), ASSyntax.createAtom("source_not_found"));
             source = found.found();
         }
-        return super.createAgent(freeName(host.fleet().prefixed(agName)), source, agClass, archClasses,
+        return super.createAgent(freeName(host.fleet().names().prefixed(agName)), source, agClass, archClasses,
                 bbPars, stts, father);
     }
 
@@ -79,7 +79,7 @@ public class RasonRuntimeServices extends LocalRuntimeServices implements rason.
      * with another robot is logged, see the naming rule).
      */
     private String freeName(String baseName) {
-        Collection<String> taken = host.fleet().allNames();
+        Collection<String> taken = host.fleet().names().allNames();
         String name = baseName;
         for (int n = 1; taken.contains(name) || masRunner.getAg(name) != null; n++)
             name = baseName + "_" + n;
@@ -94,7 +94,7 @@ public class RasonRuntimeServices extends LocalRuntimeServices implements rason.
      */
     @Override
     public boolean killAgent(String agName, String byAg, int deadline) {
-        String local = host.fleet().localNameFor(agName);
+        String local = host.fleet().names().localNameFor(agName);
         if (local != null)
             return super.killAgent(local, byAg, deadline);
         String mas = host.fleet().fleet().sendableMasOf(agName);

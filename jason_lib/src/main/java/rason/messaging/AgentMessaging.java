@@ -61,7 +61,7 @@ public final class AgentMessaging {
         if (m.getSender() == null)
             m.setSender(agent);
         String to = m.getReceiver();
-        String localName = port.localNameFor(to);
+        String localName = port.names().localNameFor(to);
         if (localName != null) {
             m.setReceiver(localName);
             local.send(m);

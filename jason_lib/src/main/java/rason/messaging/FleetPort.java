@@ -5,8 +5,6 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
-import java.util.TreeSet;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.Consumer;
@@ -54,7 +52,7 @@ public final class FleetPort implements Fleet.Listener {
     private final AtomicBoolean announceQueued = new AtomicBoolean();
     private volatile boolean presenceBeliefs = true;
     private volatile long askTimeoutNanos;
-    private volatile String agentPrefix = "";
+    private final FleetNames names;
 
     /**
      * @param rosClock the time of asks' timeouts
@@ -75,6 +73,7 @@ public final class FleetPort implements Fleet.Listener {
         this.mustStop = mustStop;
         this.askTimeoutNanos = askTimeoutNanos;
         this.fleet = new Fleet(logger, this, limited, new FleetAuth(), limits, wall);
+        this.names = new FleetNames(agents.keySet(), jasonAgents, fleet);
     }
 
     public Fleet fleet() {
@@ -116,47 +115,14 @@ public final class FleetPort implements Fleet.Listener {
         announceSoon();
     }
 
-    /** Names of the hosted agents, sorted (presence announces them). */
-    public String[] localAgents() {
-        return new TreeSet<>(agents.keySet()).toArray(new String[0]);
-    }
-
-    public boolean hosts(String agent) {
-        return agents.containsKey(agent);
+    /** The names of this process's agents, and of every agent it can reach. */
+    public FleetNames names() {
+        return names;
     }
 
     /** Every agent of this process, as Jason's infrastructure knows them. */
     Map<String, LocalAgArch> jasonAgents() {
         return jasonAgents.get();
-    }
-
-    /** What .all_names answers: the hosted agents and every reachable agent of other processes, sorted. */
-    public List<String> allNames() {
-        Set<String> all = new TreeSet<>(jasonAgents().keySet());
-        all.addAll(agents.keySet());
-        all.addAll(fleet.reachable());
-        return new ArrayList<>(all);
-    }
-
-    /** Set before the agents are created: every agent of the project is named prefix+name. */
-    public void setAgentPrefix(String prefix) {
-        agentPrefix = prefix == null ? "" : prefix;
-    }
-
-    /** name as this robot names its agents (with its prefix): agents made by .create_agent too. */
-    public String prefixed(String name) {
-        return agentPrefix + name;
-    }
-
-    /** The hosted agent called name, or prefix+name (so a program reaches its own robot's agents by their short names); null if neither. */
-    public String localNameFor(String name) {
-        Map<String, LocalAgArch> jason = jasonAgents();
-        if (jason.containsKey(name) || agents.containsKey(name))
-            return name;
-        String p = agentPrefix + name;
-        if (!agentPrefix.isEmpty() && (jason.containsKey(p) || agents.containsKey(p)))
-            return p;
-        return null;
     }
 
     // ---- configuration (from the node's ~params) ------------------------------------
@@ -404,7 +370,7 @@ public final class FleetPort implements Fleet.Listener {
     @Override
     public void reachableChanged() {
         synchronized (presencePushLock) {
-            presence.accept(presenceBeliefs ? allNames() : List.of());
+            presence.accept(presenceBeliefs ? names.allNames() : List.of());
         }
     }
 

@@ -112,15 +112,15 @@ class AgentLifecycleTest {
         await("both helpers made", () -> believes("r1_boss", "made(_)") || believes("r1_boss", "failed(_)"));
         assertFalse(believes("r1_boss", "failed(_)"), () -> mas.getAg("r1_boss").getTS().getAg().getBB().toString());
         // r1_helper is robot8's: the first one is r1_helper_1, the second (named by Jason after the variable) r1_helper_2
-        await("both helpers run", () -> bridge.fleet().hosts("r1_helper_1") && bridge.fleet().hosts("r1_helper_2"));
+        await("both helpers run", () -> bridge.fleet().names().hosts("r1_helper_1") && bridge.fleet().names().hosts("r1_helper_2"));
         assertTrue(believes("r1_boss", "made(\"r1_helper_2\")"));
-        assertFalse(bridge.fleet().hosts("r1_helper"));
+        assertFalse(bridge.fleet().names().hosts("r1_helper"));
         await("helper1 started", () -> mas.getAg("r1_helper_1") != null && believes("r1_helper_1", "started"));
         assertTrue(drainOutbox().stream().anyMatch(o -> o instanceof Outbound.Announce),
                 "the new agents are announced without waiting for the next period");
         List<String> announced = List.of(bridge.agentNames());
         assertTrue(announced.containsAll(List.of("r1_boss", "r1_helper_1", "r1_helper_2")), announced.toString());
-        assertTrue(bridge.fleet().allNames().containsAll(List.of("far_worker", "r1_helper", "r1_helper_1")));
+        assertTrue(bridge.fleet().names().allNames().containsAll(List.of("far_worker", "r1_helper", "r1_helper_1")));
         await("registered", () -> bridge.fleet().directory().search("helping").equals(List.of("r1_helper_1", "r1_helper_2")));
     }
 
@@ -136,7 +136,7 @@ class AgentLifecycleTest {
         mas.getAg("r1_boss").getTS().getC().addAchvGoal(ASSyntax.parseLiteral("kill"), null);
         mas.getAg("r1_boss").wakeUpSense();
         // the aide stops on its own thread and +killed is the boss's next step: either can come first
-        await("aide gone", () -> !bridge.fleet().hosts("r1_aide") && mas.getAg("r1_aide") == null);
+        await("aide gone", () -> !bridge.fleet().names().hosts("r1_aide") && mas.getAg("r1_aide") == null);
         await("the boss noted it", () -> believes("r1_boss", "killed"));
         List<Outbound> seen = new ArrayList<>();
         long deadline = System.currentTimeMillis() + RunningAgents.WAIT_MS;
@@ -145,7 +145,7 @@ class AgentLifecycleTest {
             Thread.sleep(5);
         }
         assertTrue(seen.stream().anyMatch(o -> o instanceof Outbound.Announce), "its departure is announced: " + seen);
-        assertFalse(bridge.fleet().allNames().contains("r1_aide"));
+        assertFalse(bridge.fleet().names().allNames().contains("r1_aide"));
         assertEquals(List.of(), bridge.fleet().directory().search("helping"));
     }
 
@@ -164,7 +164,7 @@ class AgentLifecycleTest {
         Literal unknown = belief("r1_boss", "failed(nobody_here, E, M)");
         assertEquals("agent_not_found", unknown.getTerm(1).toString());
         assertFalse(believes("r1_boss", "killed(_)"));
-        assertTrue(bridge.fleet().allNames().contains("far_worker"), "robot8's agent is untouched");
+        assertTrue(bridge.fleet().names().allNames().contains("far_worker"), "robot8's agent is untouched");
     }
 
     @Test
@@ -180,6 +180,6 @@ class AgentLifecycleTest {
         assertTrue(f.getTerm(1).toString().contains(dir.resolve("lib").toRealPath().resolve("ghost.asl").toString()),
                 f.toString());
         assertNotNull(mas.getAg("r1_boss"));
-        assertFalse(bridge.fleet().hosts("r1_ghost"));
+        assertFalse(bridge.fleet().names().hosts("r1_ghost"));
     }
 }

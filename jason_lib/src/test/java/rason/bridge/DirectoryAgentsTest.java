@@ -91,7 +91,7 @@ class DirectoryAgentsTest {
         assertTrue(hosted.containsAll(List.of("boss", "painter")), hosted.toString());
         assertFalse(hosted.contains(rason.messaging.FleetPort.DF_NAME), "no df among our agents: " + hosted);
         assertNull(mas.getAg(rason.messaging.FleetPort.DF_NAME), "Jason's df agent was never made");
-        assertFalse(bridge.fleet().allNames().contains(rason.messaging.FleetPort.DF_NAME));
+        assertFalse(bridge.fleet().names().allNames().contains(rason.messaging.FleetPort.DF_NAME));
 
         announceOtherRobot(false, new String[] { "far_painter" }, new String[] { "paint_svc" });
         await("boss searches after hearing of far_painter", () -> believes("boss", "found([far_painter, painter])"));
