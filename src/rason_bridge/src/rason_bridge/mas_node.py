@@ -1,10 +1,9 @@
 """The rason_mas node: runs a Jason project's agents on ROS topics (thesis §5.2),
 and lets them talk to the agents of other rason_mas processes (thesis §5.6).
 
-rospy plumbing only. The tables (actions, perceptions, presence, remote asks) live on the
-Java side (jason_lib, behind ``rason.bridge.Bridge``); the ~params are in
-:mod:`rason_bridge.params` and reach Java through :mod:`rason_bridge.java_config`; the
-node's threads are the parts :mod:`~rason_bridge.perception_pump`,
+rospy plumbing only. The tables live on the Java side (jason_lib, the ports of ``rason.bridge.Bridge``);
+the ~params are in :mod:`rason_bridge.params` and reach Java through :mod:`rason_bridge.java_config`;
+the node's threads are the parts :mod:`~rason_bridge.perception_pump`,
 :mod:`~rason_bridge.outbound_pump`, :mod:`~rason_bridge.held_flusher`,
 :mod:`~rason_bridge.presence_loop`, :mod:`~rason_bridge.mind_publisher` and
 :mod:`~rason_bridge.log_pump`.
@@ -36,6 +35,7 @@ from rason_bridge.outbound_pump import OutboundItems, OutboundPump
 from rason_bridge.params import ParamError, read_settings
 from rason_bridge.perception_pump import PerceptionPump
 from rason_bridge.presence_loop import PresenceLoop
+from rason_bridge.start_barrier import StartBarrier, hold
 
 _WRITE = {'error': rospy.logerr, 'warn': rospy.logwarn, 'info': rospy.loginfo, 'debug': rospy.logdebug}
 
@@ -65,6 +65,7 @@ class RasonMasNode(object):
         java_config.push(self._bridge, s, self.mas_id, time.time_ns())
         self._mas = None
         self._stopping = False
+        self._start_released = threading.Event()  # set at stop: a held start ends at once
         #: exit status of the process (set by .stopMAS(Deadline, StopJVM, Code))
         self.exit_code = 0
         self._action_topic = rospy.resolve_name('jason/action')
@@ -130,8 +131,7 @@ class RasonMasNode(object):
         self._actions.refresh_listed()
         self._perceptions.start()
         self._inbound.subscribe(self.settings.messages_topic, self.settings.presence_topic)
-        # Feedback from a decomposer that is not connected yet would be lost:
-        # let the running ones connect before the agents act.
+        # feedback from a decomposer not connected yet would be lost: let the running ones connect first
         self._graph.wait_for_publishers(self._inbound.events, self.settings.connect_wait)
         for part in (self._outbound, self._held, self._presence) + ((self._mind,) if self._mind else ()):
             part.start()
@@ -141,7 +141,12 @@ class RasonMasNode(object):
         # whatever an earlier run of this node left running stops, before the agents' first action
         for agent in self._bridge.agentNames():
             self.publish_cancel(str(agent), 0, Event.RESTART)
-        self._mas.start()
+        s, fleet = self.settings, self._bridge.fleet()  # the start barrier: presence flows, the agents wait
+        hold(StartBarrier(s.await_agents, s.await_robots, s.await_timeout),
+             lambda: (set(map(str, fleet.names().allNames())), int(fleet.fleet().reachableProcesses())),
+             rospy.loginfo, rospy.logwarn, self._start_released.wait, self._running)
+        if not self._stopping:  # a shutdown may have ended the barrier's wait
+            self._mas.start()
 
     def close_log(self):
         """Write what Java still has queued and log to stderr from now on (before the node exits)."""
@@ -152,6 +157,7 @@ class RasonMasNode(object):
         if self._stopping:
             return
         self._stopping = True
+        self._start_released.set()
         self._presence.leave()  # first, so the other processes stop counting on our agents at once
         if self._mind is not None:
             self._mind.stop()

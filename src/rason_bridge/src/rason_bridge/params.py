@@ -9,9 +9,13 @@ text names the parameter, the value and what is allowed). ``PARAMETERS.md`` is
 import collections
 import math
 import os
+import re
 
 from rason_bridge.fleet_auth import OFF, REQUIRED, default_key_file
 from rason_bridge.trust import trust_rules
+
+#: An agent name: a Jason atom.
+_ATOM = re.compile(r'^[a-z][A-Za-z0-9_]*$')
 
 #: The longest duration a ~param may give (s): about 31 years, far inside Java's long nanoseconds.
 MAX_SECONDS = 1e9
@@ -103,6 +107,12 @@ def _key_file(param, value):
     return os.path.expanduser(value) if value else None  # None: the default under ROS_HOME
 
 
+def _names(param, value):
+    if not isinstance(value, list) or not all(isinstance(n, str) and _ATOM.match(n) for n in value):
+        param.refuse(value)
+    return list(value)
+
+
 def _trust(param, value):
     try:
         return trust_rules(value)
@@ -149,6 +159,15 @@ PARAMS = (
           'how long a synchronous ask to a remote agent may wait without Jason\'s own timeout', _seconds()),
     Param('trust', 'map', {}, '', 'agent (or `*`) -> performative group -> `all`, `none` or agent names',
           'which agents of other robots may send what to the agents hosted here', _trust, shown_default='{}'),
+    Param('await_agents', 'list', [], '', 'a list of agent names (Jason atoms)',
+          'the agents (of any robot) that must be present before this node starts its agents',
+          _names, shown_default='[]'),
+    Param('await_robots', 'int', 0, '', 'a whole number, 0 or more',
+          'how many other rason_mas processes must be reachable before this node starts its agents',
+          _whole(0)),
+    Param('await_timeout', 'float', 30.0, 's (wall clock)', 'more than 0 s',
+          'how long the node holds its agents for `await_agents`/`await_robots`; then they start anyway '
+          '(with a warning naming what is missing)', _seconds(1e-9)),
     _limit('max_literal_length', 4096, 'characters of one literal'),
     _limit('max_content_length', 65536, 'characters of one message\'s content'),
     _limit('max_nesting', 32, 'brackets open at once'),

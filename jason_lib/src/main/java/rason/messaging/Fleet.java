@@ -198,6 +198,13 @@ public final class Fleet {
         apply(c);
     }
 
+    /** How many other processes (robots) can be reached now. */
+    public int reachableProcesses() {
+        synchronized (presence) {
+            return presence.linkedPeers();
+        }
+    }
+
     /** Names of the reachable agents of other processes, sorted. */
     public Set<String> reachable() {
         synchronized (presence) {

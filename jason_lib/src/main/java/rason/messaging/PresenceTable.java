@@ -228,6 +228,15 @@ public final class PresenceTable {
         return p == null ? List.of() : new ArrayList<>(p.agents);
     }
 
+    /** How many other processes can be reached now. */
+    public int linkedPeers() {
+        int n = 0;
+        for (Peer p : peers.values())
+            if (p.linked)
+                n++;
+        return n;
+    }
+
     /** Ids of the peers currently known (for tests and diagnostics). */
     public List<String> peerIds() {
         return new ArrayList<>(peers.keySet());

@@ -61,6 +61,19 @@ class PresenceTableTest {
     }
 
     @Test
+    void linkedPeersCountsTheProcessesReachableNow() {
+        PresenceTable t = new PresenceTable();
+        assertEquals(0, t.linkedPeers());
+        t.announced(R2, 1, List.of("bob"), false, 0);
+        assertEquals(0, t.linkedPeers(), "heard of, not linked");
+        joined(t, R3, List.of("carol"), 0, 1);
+        t.tick(List.of(R2, R3), 0, TIMEOUT);
+        assertEquals(2, t.linkedPeers());
+        t.announced(R2, 1, List.of("bob"), true, S);
+        assertEquals(1, t.linkedPeers(), "R2 left");
+    }
+
+    @Test
     void silentPeerLeavesAfterTheTimeoutAndItsAgentsAreLost() {
         PresenceTable t = new PresenceTable();
         joined(t, R2, List.of("bob", "bea"));
