@@ -19,6 +19,7 @@ import sys
 import tempfile
 import threading
 import time
+import weakref
 
 from . import rules
 from .addresses import host_address, HOST_SUBNET
@@ -109,22 +110,36 @@ def cleanup(prefix=DEFAULT_PREFIX, all_runs=False):
     return removed
 
 
-def read_line(proc, timeout, startswith=''):
-    """The first stdout line of proc that starts with startswith, waiting at most timeout s."""
+_pending = weakref.WeakKeyDictionary()   # proc -> bytes read from its stdout, not yet a line
+
+
+def read_line(proc, timeout, contains=''):
+    """The next stdout line of proc that contains contains, waiting at most timeout s.
+
+    Reads the pipe's file descriptor itself (a buffered readline after select could hide
+    lines already read); use only read_line on that stdout.
+    """
     deadline = time.monotonic() + timeout
-    while True:
-        left = deadline - time.monotonic()
-        ready = select.select([proc.stdout], [], [], max(left, 0))[0] if left > 0 else []
-        if not ready:
-            raise HostsError('no line starting with %r from %r within %g s'
-                             % (startswith, proc.args, timeout))
-        line = proc.stdout.readline()
-        if not line:
-            raise HostsError('%r ended (exit %r) before printing %r'
-                             % (proc.args, proc.wait(), startswith))
-        line = line.decode() if isinstance(line, bytes) else line
-        if line.startswith(startswith):
-            return line.rstrip('\n')
+    fd = proc.stdout.fileno()
+    pending = _pending.get(proc, b'')
+    try:
+        while True:
+            while b'\n' in pending:
+                line, pending = pending.split(b'\n', 1)
+                text = line.decode(errors='replace')
+                if contains in text:
+                    return text
+            left = deadline - time.monotonic()
+            if left <= 0 or not select.select([fd], [], [], left)[0]:
+                raise HostsError('no line with %r from %r within %g s'
+                                 % (contains, proc.args, timeout))
+            data = os.read(fd, 65536)
+            if not data:
+                raise HostsError('%r ended (exit %r) before printing %r'
+                                 % (proc.args, proc.wait(), contains))
+            pending += data
+    finally:
+        _pending[proc] = pending
 
 
 def stop_process(proc, timeout=5.0):
