@@ -99,6 +99,55 @@ def test_a_timed_partition_heals_by_itself():
         assert _publish(hosts, 'r1', 'rason/test', 'healed').returncode == 0
 
 
+BRIDGE_CONF = os.path.join(os.path.dirname(FLEET_CONF), 'robot_bridge.conf')
+
+
+def _start_robot_broker(hosts, robot):
+    """The robot's own broker on its loopback, bridged to the fleet broker."""
+    broker = hosts.run_python(robot, 'rason_hosts.broker', [
+        '--config', BRIDGE_CONF, '--listen', '127.0.0.1', '--port', PORT,
+        '--fleet', '%s:%d' % (hosts.address('broker'), PORT), '--robot', robot],
+        stderr=subprocess.STDOUT)
+    read_line(broker, 15, ' running')
+    state = hosts.run(robot, ['stdbuf', '-oL', 'mosquitto_sub', '-p', PORT, '-t',
+                              'rason/bridge/%s/state' % robot, '-v'], stdout=subprocess.PIPE)
+    read_line(state, 30, 'state 1')   # the bridge is connected to the fleet broker
+    return broker
+
+
+@pytest.mark.skipif(not HAVE_MOSQUITTO, reason='mosquitto / mosquitto-clients not installed')
+def test_bridged_robot_brokers_carry_messages_and_queue_them_through_a_partition():
+    with Hosts(['broker', 'r1', 'r2']) as hosts:
+        fleet = _start_broker(hosts)
+        for robot in ('r1', 'r2'):
+            _start_robot_broker(hosts, robot)
+        sub = hosts.run('r2', ['stdbuf', '-oL', 'mosquitto_sub', '-V', '5', '-p', PORT, '-t',
+                               'rason/fleet/#', '-v', '-q', '1', '-d'], stdout=subprocess.PIPE)
+        read_line(sub, 15, 'SUBACK')
+
+        def local_publish(message):
+            return hosts.call('r1', ['mosquitto_pub', '-V', '5', '-p', PORT, '-t',
+                                     'rason/fleet/talk', '-q', '1', '-m', message], timeout=10)
+        # r2's bridge subscribes on the fleet broker just after it connects: retry until then.
+        for attempt in range(40):
+            assert local_publish('hello-%d' % attempt).returncode == 0
+            try:
+                read_line(sub, 0.5, 'rason/fleet/talk hello-')
+                break
+            except HostsError:
+                continue
+        else:
+            pytest.fail('no message crossed the bridges')
+
+        hosts.cut('r2')
+        # The fleet broker drops r2's silent bridge after 1.5 keepalives (7.5 s) and keeps
+        # its session (cleansession false): what r1 publishes now waits there for r2.
+        read_line(fleet, 30, 'rason-bridge-r2 has exceeded timeout')
+        assert local_publish('queued').returncode == 0
+        hosts.heal('r2')
+        read_line(sub, 40, 'rason/fleet/talk queued')
+
+
 def _binomial_band(n, p, outside):
     """The narrowest [lo, hi] with P(X < lo) and P(X > hi) each at most outside/2."""
     pmf = [comb(n, k) * p ** k * (1 - p) ** (n - k) for k in range(n + 1)]

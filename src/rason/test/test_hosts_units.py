@@ -93,12 +93,12 @@ def test_fleet_config_renders_a_listener_and_needs_address_and_port():
         render(_config('fleet.conf'), {'LISTEN': '127.0.0.1'})
 
 
-def test_bridge_config_bridges_the_robot_to_the_fleet_with_a_kept_mqtt5_session():
+def test_bridge_config_bridges_the_robot_to_the_fleet_with_a_kept_session():
     text = render(_config('robot_bridge.conf'), {'LISTEN': '127.0.0.1', 'PORT': 1883,
                                                  'FLEET': '198.18.0.1:1883', 'ROBOT': 'r1'})
     lines = [line.strip() for line in text.splitlines()]
     for expected in ('connection rason-bridge-r1', 'address 198.18.0.1:1883',
-                     'bridge_protocol_version mqttv50', 'cleansession false',
+                     'bridge_protocol_version mqttv311', 'cleansession false',
                      'topic rason/# both 1'):
         assert expected in lines
     with pytest.raises(ValueError, match='--fleet'):
