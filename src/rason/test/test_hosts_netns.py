@@ -196,9 +196,10 @@ def test_the_relay_delays_a_tcp_round_trip_by_twice_its_one_way_delay():
         direct = _probe(hosts, 'r1', ['tcp-rtt', '--to', '%s:%d' % (hosts.address('broker'),
                                                                      echo_port)])
         delayed = _probe(hosts, 'r1', ['tcp-rtt', '--to', '%s:%d' % (relay.address, relay.port)])
-        gained = delayed['median_ms'] - direct['median_ms']
-        # Timers fire late, never early: a tight lower bound, a loose upper one.
-        assert 2 * delay_ms - 1 <= gained <= 2 * delay_ms + 60, (direct, delayed)
+        # Every round trip crosses the relay twice and its timers fire late, never early:
+        # at least 2*D each; the median gains 2*D plus a loaded machine's scheduling delays.
+        assert min(delayed['rtts_ms']) >= 2 * delay_ms, delayed
+        assert delayed['median_ms'] - direct['median_ms'] <= 2 * delay_ms + 60, (direct, delayed)
         assert relay.set_delay(0) == 0
         undelayed = _probe(hosts, 'r1', ['tcp-rtt', '--to', '%s:%d' % (relay.address,
                                                                         relay.port)])
