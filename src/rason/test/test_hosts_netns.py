@@ -1,6 +1,7 @@
 """rason_hosts with real network namespaces: needs root (CI runs as root), skipped otherwise."""
 import json
 import os
+import shutil
 import subprocess
 import sys
 import textwrap
@@ -64,6 +65,21 @@ def test_each_host_has_its_address_and_runs_ip_and_its_own_loopback():
         assert hosts.address('a') + '/24' in shown and '127.0.0.1/8' in shown
         assert hosts.address('b') not in shown
         assert hosts.address('a').startswith('198.18.')
+
+
+@pytest.mark.skipif(not shutil.which('roscore'), reason='ROS (roscore) not installed')
+def test_each_host_runs_its_own_ros_master_on_the_same_port():
+    with Hosts(['r1', 'r2']) as hosts:
+        env = hosts.ros_env(master_port=11311)
+        for robot in ('r1', 'r2'):
+            core = hosts.run(robot, ['roscore', '-p', '11311'], env=env,
+                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+            read_line(core, 60, 'started core service')
+        for robot in ('r1', 'r2'):
+            hosts.call(robot, ['rosparam', 'set', '/robot', robot], env=env).check_returncode()
+        for robot in ('r1', 'r2'):
+            shown = hosts.call(robot, ['rosparam', 'get', '/robot'], env=env)
+            assert shown.stdout.strip() == robot, shown
 
 
 @pytest.mark.skipif(not HAVE_MOSQUITTO, reason='mosquitto / mosquitto-clients not installed')

@@ -318,6 +318,18 @@ class Hosts:
                                             if p)
         return env
 
+    @staticmethod
+    def ros_env(env=None, master_port=11311):
+        """env (default os.environ) for a ROS process whose master is on its host's loopback.
+
+        Each host has a loopback of its own, so every robot can run its master on the same
+        port without clashing, and nothing of a robot's ROS graph is reachable from another.
+        """
+        env = dict(os.environ if env is None else env)
+        env.update(ROS_MASTER_URI='http://127.0.0.1:%d' % master_port, ROS_IP='127.0.0.1')
+        env.pop('ROS_HOSTNAME', None)
+        return env
+
     def run_python(self, name, module, args, **popen_kwargs):
         """Start python3 -m module args in host name (stdout piped, text)."""
         popen_kwargs.setdefault('stdout', subprocess.PIPE)
