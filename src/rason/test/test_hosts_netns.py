@@ -284,7 +284,7 @@ def test_cleanup_removes_a_crashed_run_and_spares_a_live_one():
     crashed = result.stdout.strip()
     assert crashed, result.stderr
     assert [n for n in list_namespaces() if n.startswith('rason-%s-' % crashed)]
-    with Hosts(['live']) as live:
+    with Hosts(['live'], clean_leftovers=False) as live:
         removed = cleanup()
         assert sorted(removed) == ['rason-%s-r1' % crashed, 'rason-%s-switch' % crashed]
         assert len(_run_namespaces(live)) == 2
@@ -297,3 +297,15 @@ def test_cli_cleanup_runs():
                             capture_output=True, text=True, timeout=60,
                             env=dict(os.environ, PYTHONPATH=package_parent))
     assert result.returncode == 0, result.stderr
+
+
+def test_a_new_run_removes_what_a_crashed_run_left():
+    crashed = Hosts(['r1'], clean_leftovers=False).start()
+    crashed_namespaces = crashed.namespaces
+    os.unlink(os.path.join(OWNERS_DIR, 'rason-' + crashed.run_id))   # as if its owner were gone
+    try:
+        with Hosts(['r1']) as hosts:
+            assert not set(crashed_namespaces) & set(list_namespaces())
+            assert len(_run_namespaces(hosts)) == 2
+    finally:
+        crashed.close()

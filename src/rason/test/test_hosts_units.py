@@ -235,3 +235,18 @@ def test_broker_wrapper_serves_on_loopback_and_stops_on_sigint():
         assert broker.wait(10) == 0
     finally:
         stop_process(broker)
+
+
+@pytest.mark.parametrize('names, run_id', [(['switch'], None), (['a', 'a'], None),
+                                           (['Bad-Name'], None), (['a'], 'not-hex')])
+def test_host_names_and_run_ids_are_checked_before_anything_is_made(names, run_id):
+    with pytest.raises(ValueError):
+        rason_hosts.Hosts(names, run_id=run_id)
+
+
+def test_hosts_name_their_namespaces_after_the_run():
+    hosts = rason_hosts.Hosts(['broker', 'r1'], run_id='00beef')
+    assert hosts.namespaces == ['rason-00beef-switch', 'rason-00beef-broker', 'rason-00beef-r1']
+    assert (hosts.address('broker'), hosts.address('r1')) == ('198.18.0.1', '198.18.0.2')
+    with pytest.raises(KeyError):
+        hosts.namespace('r9')

@@ -178,7 +178,10 @@ class Relay:
 class Hosts:
     """N named hosts on one switch. Use as a context manager; see the module docstring."""
 
-    def __init__(self, names, run_id=None, prefix=DEFAULT_PREFIX):
+    def __init__(self, names, run_id=None, prefix=DEFAULT_PREFIX, clean_leftovers=True):
+        """names: the hosts, numbered 198.18.0.1, .2, ... in this order. run_id: six hex digits
+        (default random). clean_leftovers: on start, remove what crashed runs left (never a
+        live run's namespaces)."""
         names = list(names)
         for name in names:
             if not HOST_NAME.match(name) or name == SWITCH:
@@ -189,6 +192,9 @@ class Hosts:
         self.names = names
         self.prefix = prefix
         self.run_id = run_id or secrets.token_hex(3)
+        if not re.match(r'^[0-9a-f]{6}$', self.run_id):
+            raise ValueError('run_id must be six hex digits, not %r' % self.run_id)
+        self.clean_leftovers = clean_leftovers
         self._ports = {name: 'p%d' % i for i, name in enumerate(names)}
         self._addresses = {name: host_address(i) for i, name in enumerate(names)}
         self._links = {name: {'loss': 0, 'cut': False, 'rate': None} for name in names}
@@ -229,6 +235,8 @@ class Hosts:
         if os.geteuid() != 0:
             raise HostsError('network namespaces need root')
         ensure_netns_dir()
+        if self.clean_leftovers:
+            cleanup(self.prefix)
         os.makedirs(OWNERS_DIR, exist_ok=True)
         with open(_owner_file(self.prefix, self.run_id), 'w') as f:
             f.write('%d %s\n' % (os.getpid(), _start_time(os.getpid())))
