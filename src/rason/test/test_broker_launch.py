@@ -18,7 +18,8 @@ def _rason_found():
 
 pytestmark = [
     pytest.mark.skipif(not _rason_found(), reason='needs roslaunch and the built workspace'),
-    pytest.mark.skipif(not shutil.which('mosquitto_sub') or not os.path.exists('/usr/sbin/mosquitto'),
+    pytest.mark.skipif(not shutil.which('mosquitto_sub')
+                       or not os.path.exists('/usr/sbin/mosquitto'),
                        reason='mosquitto / mosquitto-clients not installed'),
 ]
 

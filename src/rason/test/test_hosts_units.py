@@ -5,7 +5,6 @@ import socket
 import subprocess
 import sys
 import threading
-import time
 
 import pytest
 
@@ -224,8 +223,9 @@ def test_broker_wrapper_serves_on_loopback_and_stops_on_sigint():
                               env=env, start_new_session=True)
     try:
         read_line(broker, 10, ' running')
-        sub = subprocess.Popen(['stdbuf', '-oL', 'mosquitto_sub', '-V', '5', '-p', str(port), '-t', 'rason/t',
-                                '-C', '1', '-W', '20', '-d'], stdout=subprocess.PIPE, text=True)
+        sub = subprocess.Popen(['stdbuf', '-oL', 'mosquitto_sub', '-V', '5', '-p', str(port),
+                                '-t', 'rason/t', '-C', '1', '-W', '20', '-d'],
+                               stdout=subprocess.PIPE)
         read_line(sub, 10, 'SUBACK')
         subprocess.run(['mosquitto_pub', '-V', '5', '-p', str(port), '-t', 'rason/t', '-m',
                         'hello'], check=True, timeout=10)

@@ -34,7 +34,8 @@ def render(template, values):
 
 def _arguments(argv):
     parser = argparse.ArgumentParser(prog='mosquitto_broker', description=__doc__.split('\n')[0])
-    parser.add_argument('--config', required=True, help='a template, e.g. config/mosquitto/fleet.conf')
+    parser.add_argument('--config', required=True,
+                        help='a template, e.g. config/mosquitto/fleet.conf')
     parser.add_argument('--listen', default='127.0.0.1')
     parser.add_argument('--port', type=int, default=1883)
     parser.add_argument('--fleet', default='', help='ADDR:PORT of the fleet broker (bridge config)')

@@ -3,7 +3,8 @@
   python3 -m rason_hosts.probe udp-echo --bind ADDR [--port P]      prints "ready PORT"
   python3 -m rason_hosts.probe udp-probe --to ADDR:PORT --count N    prints JSON {sent, received}
   python3 -m rason_hosts.probe tcp-echo --bind ADDR [--port P]      prints "ready PORT"
-  python3 -m rason_hosts.probe tcp-rtt --to ADDR:PORT --count N      prints JSON {rtts_ms, median_ms}
+  python3 -m rason_hosts.probe tcp-rtt --to ADDR:PORT --count N      prints JSON {rtts_ms,
+                                                                     median_ms}
 """
 import argparse
 import json
