@@ -16,6 +16,7 @@ from rason_msgs.msg import Perception  # noqa: E402
 
 
 class TestPerception(unittest.TestCase):
+    """Each test publishes from sources of its own, so no test sees another's percepts."""
 
     @classmethod
     def setUpClass(cls):
@@ -33,7 +34,7 @@ class TestPerception(unittest.TestCase):
         self.assertTrue(found, 'agent never printed %r' % line)
         return found[0][0]
 
-    def test_1_replace_and_clear_per_source(self):
+    def test_each_source_replaces_and_clears_only_its_own_percepts(self):
         self.send('a', 'temp(a,1)')
         self.expect(r'\+temp a 1')
         self.send('b', 'temp(b,1)')
@@ -46,7 +47,7 @@ class TestPerception(unittest.TestCase):
         self.send('b')
         self.expect(r'-temp b 1')
 
-    def test_2_malformed_literal_is_dropped_alone(self):
+    def test_a_malformed_literal_is_dropped_alone(self):
         self.send('c', 'temp(c,1)', 'temp(', 'temp(c,X)', 'temp(c,3)')
         self.expect(r'\+temp c 1')
         self.expect(r'\+temp c 3')
@@ -55,13 +56,14 @@ class TestPerception(unittest.TestCase):
         self.send('c')
         self.expect(r'-temp c 3')
 
-    def test_3_silent_source_expires_after_ttl_but_a_live_one_stays(self):
+    def test_a_silent_source_expires_after_the_ttl_but_a_live_one_stays(self):
         stop = threading.Event()
 
-        def keep_publishing():
-            while not stop.is_set():
+        def keep_publishing():  # at 5 Hz, well inside the TTL
+            while True:
                 self.send('live', 'temp(live,1)')
-                time.sleep(0.2)
+                if stop.wait(0.2):
+                    return
         threading.Thread(target=keep_publishing, daemon=True).start()
         try:
             self.send('silent', 'temp(silent,1)')
@@ -80,8 +82,10 @@ class TestPerception(unittest.TestCase):
             stop.set()
         self.expect(r'-temp live 1', timeout=10)
 
-    def test_4_idle_agent_reacts_without_waiting_for_its_sleep(self):
-        time.sleep(3.0)  # long enough for an idle Jason agent to sleep its longest (1 s)
+    def test_an_idle_agent_reacts_without_waiting_for_its_sleep(self):
+        # the agent must be idle: nothing printed for longer than an idle Jason agent
+        # sleeps at most (1 s), so that without the bridge's wake-up it would be asleep
+        self.log.wait_quiet(3.0, pattern=r'^\[watcher\] ')
         sent = time.monotonic()
         self.send('d', 'temp(d,1)')
         seen = self.expect(r'\+temp d 1')

@@ -22,7 +22,7 @@ import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
 from rason_testing import (MULTI_AGENTS, LogWatcher, Robot, run, start_mas, stop_mas,  # noqa: E402
-                           wait_for_subscribers)
+                           wait_for, wait_for_subscribers)
 from rason_bridge.fleet_key import generate_key, write_key  # noqa: E402
 from rason_msgs.msg import AgentMessage, Presence  # noqa: E402
 
@@ -85,13 +85,10 @@ class TestFleetAuth(unittest.TestCase):
 
     def incarnation(self, mas):
         """The incarnation mas announces (heard on /rason/presence)."""
-        deadline = time.monotonic() + 10
-        while time.monotonic() < deadline:
+        def heard():
             with self._lock:
-                if mas in self.incarnations:
-                    return self.incarnations[mas]
-            time.sleep(0.02)
-        self.fail('never heard the presence of %s' % mas)
+                return self.incarnations.get(mas)
+        return wait_for(heard, 10, 'the presence of %s' % mas)
 
     def dropped(self, publish, pattern, node, count=1, timeout=10.0):
         """Publish (a callable) and wait until ``node`` logs ``count`` more lines matching pattern."""
@@ -103,14 +100,10 @@ class TestFleetAuth(unittest.TestCase):
 
     def captured(self, content, sender, timeout=10.0):
         """The genuine AgentMessage with this content from sender, heard on /rason/messages."""
-        deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline:
+        def heard():
             with self._lock:
-                for m in self.heard:
-                    if m.content == content and m.sender == sender and m.mac:
-                        return m
-            time.sleep(0.02)
-        self.fail('never heard %s from %s' % (content, sender))
+                return next((m for m in self.heard if m.content == content and m.sender == sender and m.mac), None)
+        return wait_for(heard, timeout, '%s from %s on /rason/messages' % (content, sender))
 
     def expect(self, line, timeout=10.0, node=None):
         found = self.log.wait_for(line, timeout=timeout, node=node)
@@ -131,7 +124,7 @@ class TestFleetAuth(unittest.TestCase):
 
     # ---- believe, do, stop, reveal -------------------------------------------------------
 
-    def test_01_a_forged_tell_is_not_believed(self):
+    def test_a_forged_tell_is_not_believed(self):
         line = self.dropped(lambda: self.messages.publish(self.forged('tell', 'hello(666)')),
                             r'^dropped message tell from bob \(/robot2/rason_mas\) to alice: unauthenticated',
                             ALICE_MAS)
@@ -140,14 +133,14 @@ class TestFleetAuth(unittest.TestCase):
         self.expect(r'^\[alice\] told hello\(667\) by bob$')
         self.absent(r'^\[alice\] told hello\(666\)')
 
-    def test_02_a_forged_achieve_is_not_done(self):
+    def test_a_forged_achieve_is_not_done(self):
         self.dropped(lambda: self.messages.publish(self.forged('achieve', 'greet(forged)')),
                      r'^dropped message achieve from bob \(/robot2/rason_mas\) to alice: unauthenticated', ALICE_MAS)
         run(self.log, self.r2, 'bob', 'send(alice, achieve, greet(marker2))', 'sent')
         self.expect(r'^\[alice\] asked to greet marker2 by bob$')
         self.absent(r'^\[alice\] asked to greet forged')
 
-    def test_03_a_forged_plan_is_neither_learned_nor_run(self):
+    def test_a_forged_plan_is_neither_learned_nor_run(self):
         def publish():
             self.messages.publish(self.forged('tellHow', '+!evil <- .print("evil ran").', sender='alice', to='bob'))
             self.messages.publish(self.forged('achieve', 'evil', sender='alice', to='bob'))
@@ -158,7 +151,7 @@ class TestFleetAuth(unittest.TestCase):
         self.absent(r'evil ran')
         self.absent(r'^\[bob\].*evil')  # not even a failure: the achieve never reached bob
 
-    def test_04_a_forged_stop_stops_nothing(self):
+    def test_a_forged_stop_stops_nothing(self):
         run(self.log, self.r1, 'alice', 'send(bob, achieve, linger)', 'sent')
         self.expect(r'^\[bob\] lingering for alice$')
 
@@ -173,7 +166,7 @@ class TestFleetAuth(unittest.TestCase):
         self.absent(r'^\[bob\] lingered$')
         run(self.log, self.r1, 'alice', 'send(bob, unachieve, linger)', 'sent')  # the genuine one works
 
-    def test_05_a_forged_ask_reveals_nothing(self):
+    def test_a_forged_ask_reveals_nothing(self):
         def publish():
             self.messages.publish(self.forged('askOne', 'secret(X)', msg_id='forged_ask'))
             self.messages.publish(self.forged('askAll', 'secret(X)', msg_id='forged_ask_all'))
@@ -188,7 +181,7 @@ class TestFleetAuth(unittest.TestCase):
 
     # ---- replay and tampering --------------------------------------------------------------
 
-    def test_06_a_genuine_message_played_again_is_dropped(self):
+    def test_a_genuine_message_played_again_is_dropped(self):
         run(self.log, self.r2, 'bob', 'send(alice, achieve, greet(replay6))', 'sent')
         self.expect(r'^\[alice\] asked to greet replay6 by bob$')
         genuine = self.captured('greet(replay6)', 'bob')
@@ -199,7 +192,7 @@ class TestFleetAuth(unittest.TestCase):
         self.expect(r'^\[alice\] asked to greet marker6 by bob$')
         self.assertEqual(len(self.log.lines(r'^\[alice\] asked to greet replay6 by bob$')), 1)
 
-    def test_07_a_changed_or_guessed_mac_is_refused(self):
+    def test_a_changed_or_guessed_mac_is_refused(self):
         run(self.log, self.r2, 'bob', 'send(alice, tell, hello(7))', 'sent')
         self.expect(r'^\[alice\] told hello\(7\) by bob$')
         genuine = self.captured('hello(7)', 'bob')
@@ -219,7 +212,7 @@ class TestFleetAuth(unittest.TestCase):
 
     # ---- presence ----------------------------------------------------------------------------
 
-    def test_08_a_forged_presence_neither_hides_a_robot_nor_adds_an_agent(self):
+    def test_a_forged_presence_neither_hides_a_robot_nor_adds_an_agent(self):
         now = time.time_ns()
 
         def publish():
@@ -247,7 +240,7 @@ class TestFleetAuth(unittest.TestCase):
 
     # ---- keys and the opt-out ------------------------------------------------------------------
 
-    def test_09_a_robot_with_another_key_is_refused(self):
+    def test_a_robot_with_another_key_is_refused(self):
         key_file = os.path.join(self.tmp, 'other_fleet.key')
         write_key(key_file, generate_key())
         stranger = Robot('robot3')
@@ -271,7 +264,7 @@ class TestFleetAuth(unittest.TestCase):
         finally:
             stop_mas(proc)
 
-    def test_10_a_missing_key_stops_the_node_with_a_clear_error(self):
+    def test_a_missing_key_stops_the_node_with_a_clear_error(self):
         missing = os.path.join(self.tmp, 'nowhere', 'fleet.key')
         proc = self.start('robot5', 'stranger', output=subprocess.PIPE, fleet_key_file=missing)
         out, _ = proc.communicate(timeout=90)
@@ -280,7 +273,7 @@ class TestFleetAuth(unittest.TestCase):
                          + re.escape(missing) + ' does not exist')
         self.assertIn('rosrun rason_bridge fleet_key %s' % missing, out)
 
-    def test_11_the_opt_out_is_announced_and_its_unsigned_traffic_refused(self):
+    def test_the_opt_out_is_announced_and_its_unsigned_traffic_refused(self):
         labbot = Robot('robot4')
         proc = self.start('robot4', 'labbot', fleet_auth='off')
         try:
@@ -291,10 +284,8 @@ class TestFleetAuth(unittest.TestCase):
             labbot.wait_connected()
             self.assertTrue(self.log.wait_ready())
             # labbot checks nothing, so it believes alice is there; alice refuses what it sends
-            deadline = time.monotonic() + 20
-            while run(self.log, labbot, 'labbot', 'names', r'names .*') != 'names [alice,bob,labbot]':
-                self.assertLess(time.monotonic(), deadline, 'labbot never listed alice and bob')
-                time.sleep(0.2)
+            wait_for(lambda: run(self.log, labbot, 'labbot', 'names', r'names .*') == 'names [alice,bob,labbot]',
+                     20, 'labbot to list alice and bob', interval=0.2)
             self.dropped(lambda: run(self.log, labbot, 'labbot', 'send(alice, tell, hello(11))', 'sent'),
                          r'^dropped message tell from labbot \(/robot4/rason_mas\) to alice: unauthenticated',
                          ALICE_MAS)

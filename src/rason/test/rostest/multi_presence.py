@@ -14,7 +14,7 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
-from rason_testing import MULTI_AGENTS, LogWatcher, Robot, run, start_mas, stop_mas  # noqa: E402
+from rason_testing import MULTI_AGENTS, LogWatcher, Robot, run, start_mas, stop_mas, wait_for  # noqa: E402
 from rason_msgs.msg import Presence  # noqa: E402
 
 TIMEOUT = 1.5          # presence_timeout of every process in this test
@@ -64,11 +64,9 @@ class TestPresence(unittest.TestCase):
             self.heard.pop(robot.mas, None)
         proc = start_mas(robot.ns, os.path.join(MULTI_AGENTS, name + '.mas2j'), **PARAMS)
         self.procs[robot.ns] = proc
-        deadline = time.monotonic() + 60
-        while robot.mas not in self.heard:
-            self.assertLess(time.monotonic(), deadline, '%s never announced itself' % robot.mas)
-            self.assertIsNone(proc.poll(), '%s exited' % robot.mas)
-            time.sleep(0.05)
+        wait_for(lambda: robot.mas in self.heard or proc.poll() is not None, 60,
+                 '%s to announce itself' % robot.mas, interval=0.05)
+        self.assertIsNone(proc.poll(), '%s exited' % robot.mas)
         robot.wait_connected()
         self.assertTrue(self.log.wait_ready())
         return proc
@@ -81,6 +79,11 @@ class TestPresence(unittest.TestCase):
             proc = self.start(robot, name)
             self.expect(r'^\[alice\] present %s$' % name, timeout=TIMEOUT + SLACK, count=before + 1)
         return proc
+
+    def away(self, robot, name):
+        """The robot's rason_mas stopped, if this test class started it and it still runs."""
+        if self.running(robot):
+            self.stop(robot, name)
 
     def kill(self, robot, name):
         """SIGKILL the robot's rason_mas; returns when it was killed and when alice saw it absent."""
@@ -106,9 +109,9 @@ class TestPresence(unittest.TestCase):
         self.assertTrue(found, 'never saw %r (%d times)' % (line, count))
         return found[count - 1][0]
 
-    def test_1_join_is_noticed_and_messages_flow(self):
-        if self.running(self.bob):
-            self.stop(self.bob, 'bob')  # a join needs bob away first
+    def test_a_join_is_noticed_and_messages_flow(self):
+        self.away(self.carol, 'carol')
+        self.away(self.bob, 'bob')  # a join needs bob away first
         before = self.count(r'^\[alice\] present bob$')
         self.start(self.bob, 'bob')
         seen = self.expect(r'^\[alice\] present bob$', timeout=TIMEOUT + SLACK, count=before + 1)
@@ -116,14 +119,13 @@ class TestPresence(unittest.TestCase):
               % (seen - self.heard[self.bob.mas]))
         self.assertLess(seen - self.heard[self.bob.mas], TIMEOUT + SLACK)
         # and bob notices alice, who was there first, just as fast
-        deadline = time.monotonic() + TIMEOUT + SLACK
-        while run(self.log, self.bob, 'bob', 'names', r'names .*') != 'names [alice,bob]':
-            self.assertLess(time.monotonic(), deadline, 'bob does not see alice')
-            time.sleep(0.1)
+        wait_for(lambda: run(self.log, self.bob, 'bob', 'names', r'names .*') == 'names [alice,bob]',
+                 TIMEOUT + SLACK, 'bob to see alice', interval=0.1)
         run(self.log, self.alice, 'alice', 'send(bob, tell, hello(1))', 'sent')
         self.expect(r'^\[bob\] told hello\(1\) by alice$')
 
-    def test_2_sigkill_is_noticed_and_the_survivor_keeps_running(self):
+    def test_a_sigkill_is_noticed_and_the_survivor_keeps_running(self):
+        self.away(self.carol, 'carol')
         self.joined(self.bob, 'bob')
         slow = r'^\[bob\] slow answer for alice$'
         before = self.count(slow)
@@ -141,12 +143,11 @@ class TestPresence(unittest.TestCase):
         self.assertIn("agent 'bob' has left", out)
         self.assertEqual(run(self.log, self.alice, 'alice', 'names', r'names .*'), 'names [alice]')
 
-    def test_3_restarted_robot_rejoins(self):
-        # bob has been there and was killed (as test 2 leaves him); alone, this test does that first
-        if self.running(self.bob) is None and self.bob.ns not in self.procs:
-            self.joined(self.bob, 'bob')
-        if self.running(self.bob):
-            self.kill(self.bob, 'bob')
+    def test_a_restarted_robot_rejoins(self):
+        self.away(self.carol, 'carol')
+        # bob has been there and was killed
+        self.joined(self.bob, 'bob')
+        self.kill(self.bob, 'bob')
         before = self.count(r'^\[alice\] present bob$')
         self.start(self.bob, 'bob')
         self.expect(r'^\[alice\] present bob$', timeout=TIMEOUT + SLACK, count=before + 1)
@@ -156,7 +157,7 @@ class TestPresence(unittest.TestCase):
         self.assertEqual(run(self.log, self.bob, 'bob', 'ask(alice, askOne, secret)', r'answer .*'),
                          'answer secret(alice_secret)[source(alice)]')
 
-    def test_4_clean_stop_is_announced(self):
+    def test_a_clean_stop_is_announced(self):
         self.joined(self.bob, 'bob')
         self.joined(self.carol, 'carol')
         stopped, absent = self.stop(self.carol, 'carol')

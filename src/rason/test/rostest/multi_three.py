@@ -35,11 +35,11 @@ class TestThreeProcesses(unittest.TestCase):
         self.assertTrue(found, 'never saw %r' % line)
         return found
 
-    def test_1_every_process_names_all_three(self):
+    def test_every_process_names_all_three(self):
         for a in AGENTS:
             self.assertEqual(run(self.log, self.robots[a], a, 'names', r'names .*'), 'names [alice,bob,carol]')
 
-    def test_2_broadcast_from_each_process_reaches_all_others_once(self):
+    def test_broadcast_from_each_process_reaches_all_others_once(self):
         for k, sender in enumerate(AGENTS):
             run(self.log, self.robots[sender], sender, 'broadcast(tell, hello(%d))' % (20 + k), 'broadcast')
             for receiver in AGENTS:
@@ -59,7 +59,7 @@ class TestThreeProcesses(unittest.TestCase):
                 got = self.log.lines(r'^\[%s\] told hello\(%d\) by' % (receiver, 20 + k))
                 self.assertEqual(len(got), 0 if receiver == sender else 1, (receiver, sender, got))
 
-    def test_3_achieve_starts_goals_remotely_with_the_right_source(self):
+    def test_achieve_starts_goals_remotely_with_the_right_source(self):
         run(self.log, self.robots['carol'], 'carol', 'send(alice, achieve, greet(from_carol))', 'sent')
         self.expect(r'^\[alice\] asked to greet from_carol by carol$')
         run(self.log, self.robots['alice'], 'alice', 'send(carol, achieve, greet(from_alice))', 'sent')
@@ -74,12 +74,12 @@ class TestThreeProcesses(unittest.TestCase):
         self.expect(r'^\[bob\] told hello\(36\) by alice$')
         self.assertFalse(self.log.lines(r'^\[bob\] asked to greet from_(carol|alice)'))
 
-    def test_4_a_list_of_receivers_spans_processes(self):
+    def test_a_list_of_receivers_spans_processes(self):
         run(self.log, self.robots['alice'], 'alice', 'send([bob, carol], tell, hello(40))', 'sent')
         self.expect(r'^\[bob\] told hello\(40\) by alice$')
         self.expect(r'^\[carol\] told hello\(40\) by alice$')
 
-    def test_5_each_asked_agent_answers_for_itself(self):
+    def test_each_asked_agent_answers_for_itself(self):
         self.assertEqual(run(self.log, self.robots['alice'], 'alice', 'ask(carol, askOne, secret)', r'answer .*'),
                          'answer secret(carol_secret)[source(carol)]')
         self.assertEqual(run(self.log, self.robots['carol'], 'carol', 'ask(bob, askOne, secret)', r'answer .*'),

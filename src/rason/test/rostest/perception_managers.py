@@ -56,7 +56,10 @@ class TestPerceptionManagers(unittest.TestCase):
         self.expect(r'^\[plain\] \+battery 50$')
         self.expect(r'^\[plain\] \+temp 20$')
 
-    def test_1_selective_agent_gets_only_what_it_declared(self):
+    # picky keeps its declared selection all along; chooser, declared the same, is the one
+    # whose selection a test changes
+
+    def test_a_selective_agent_gets_only_what_it_declared(self):
         self.cam()
         self.expect(r'^\[picky\] \+robot r1$')
         # cam's other percepts would have been events of the same update as robot r1: a
@@ -67,22 +70,22 @@ class TestPerceptionManagers(unittest.TestCase):
         # the bridge's present/1 is filtered too: picky did not declare it
         self.assertFalse(self.log.lines(r'^\[picky\] present'))
 
-    def test_2_selection_changes_at_run_time(self):
+    def test_the_selection_changes_at_run_time(self):
         self.cam()
-        self.expect(r'^\[picky\] \+robot r1$')
-        self.addCleanup(self.command, 'picky', 'perceive_only(["robot/4", "cmd/3"])', r'perceiving only .*')
-        self.command('picky', 'perceive_only(["battery/1", "cmd/3"])', r'perceiving only .*')
+        self.expect(r'^\[chooser\] \+robot r1$')
+        self.addCleanup(self.command, 'chooser', 'perceive_only(["robot/4", "cmd/3"])', r'perceiving only .*')
+        self.command('chooser', 'perceive_only(["battery/1", "cmd/3"])', r'perceiving only .*')
         # what cam sent last is re-filtered at once, without cam publishing again
-        self.expect(r'^\[picky\] \+battery 50$')
-        self.expect(r'^\[picky\] -robot r1$')
-        self.command('picky', 'perceive_all', 'perceiving all')
-        self.expect(r'^\[picky\] \+temp 20$')
-        self.expect(r'^\[picky\] present plain$')
-        out = self.command('picky', 'perceive_only(["robot"])', r'failed .*')
+        self.expect(r'^\[chooser\] \+battery 50$')
+        self.expect(r'^\[chooser\] -robot r1$')
+        self.command('chooser', 'perceive_all', 'perceiving all')
+        self.expect(r'^\[chooser\] \+temp 20$')
+        self.expect(r'^\[chooser\] present plain$')
+        out = self.command('chooser', 'perceive_only(["robot"])', r'failed .*')
         self.assertIn('wrong_arguments', out)
         self.assertIn("'robot' is not functor/arity", out)
 
-    def test_3_rate_limit_holds_a_burst_and_applies_the_newest(self):
+    def test_the_rate_limit_holds_a_burst_and_applies_the_newest(self):
         sent = time.monotonic()
         self.send('counter', 'count(1)')
         self.expect(r'^\[slow\] \+count 1$')
@@ -103,7 +106,7 @@ class TestPerceptionManagers(unittest.TestCase):
         print('rate limit 2/s: burst of 10 -> %d updates, the newest %.2f s after the first was sent'
               % (2 + len(between), last - sent))
 
-    def test_4_rate_limit_bounds_a_steady_stream(self):
+    def test_the_rate_limit_bounds_a_steady_stream(self):
         start = time.monotonic()
         k = 100
         while time.monotonic() - start < 2.0:  # 20 Hz for 2 s: about 40 updates
@@ -122,7 +125,7 @@ class TestPerceptionManagers(unittest.TestCase):
         self.assertLessEqual(slow, sent // 4)
         self.assertGreater(plain, slow)
 
-    def test_5_accumulate_keeps_every_message_per_source_replaces(self):
+    def test_accumulate_keeps_every_message_per_source_replaces(self):
         self.cam()
         self.send('thermo', 'temp(1)')
         self.expect(r'^\[hoarder\] \+temp 1$')
@@ -133,7 +136,7 @@ class TestPerceptionManagers(unittest.TestCase):
         self.assertEqual(self.command('plugin', 'temps', r'temps .*'), 'temps [1,2,20]')
         self.assertEqual(self.command('plain', 'temps', r'temps .*'), 'temps [2,20]')
 
-    def test_6_bad_perception_options_stop_the_node_with_a_clear_message(self):
+    def test_bad_perception_options_stop_the_node_with_a_clear_message(self):
         for args, why in (
                 ([os.path.join(AGENTS, 'bad_manager.mas2j')],
                  "agent 'oops': perception_manager: perception manager 'fancy' is neither per_source, accumulate"),
