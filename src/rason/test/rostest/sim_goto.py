@@ -8,13 +8,13 @@ import math
 import os
 import sys
 import threading
-import time
 import unittest
 
 import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
+from rason_testing import wait_for  # noqa: E402
 from sim_testing import BaseWatch, SimRobot, relative  # noqa: E402
 from geometry_msgs.msg import PoseStamped  # noqa: E402
 from nav_msgs.msg import Odometry  # noqa: E402
@@ -107,10 +107,7 @@ class TestSimGoto(unittest.TestCase):
         self.assertEqual(self.robot.act('compensate', 'none', 0), Event.OK)
         self.assertEqual(self.robot.act('pose_source', 'odom'), Event.OK)
         self.robot.teleport(*START)
-        deadline = time.monotonic() + 10
-        while self.watch.odom is None:
-            self.assertLess(time.monotonic(), deadline, 'no odometry')
-            time.sleep(0.05)
+        wait_for(lambda: self.watch.odom is not None, 10, 'odometry')
         # at rest: the goal in the odometry frame and where it truly is
         self.odom_start, self.true_start = self.watch.odom, self.robot.pose()
         self.goal_odom = relative(self.odom_start, GOAL_AHEAD, GOAL_LEFT)
@@ -122,8 +119,7 @@ class TestSimGoto(unittest.TestCase):
         began = rospy.get_time()
         result = self.robot.act('goto', '%.4f' % self.goal_odom[0], '%.4f' % self.goal_odom[1])
         took = rospy.get_time() - began
-        rospy.sleep(0.5)         # sim time: the base comes to rest
-        pose = self.robot.pose()
+        pose = self.robot.wait_at_rest()
         error = math.hypot(pose[0] - self.goal_true[0], pose[1] - self.goal_true[1])
         (sx, sy), (gx, gy) = self.true_start[:2], self.goal_true
         length = math.hypot(gx - sx, gy - sy)
@@ -174,8 +170,7 @@ class TestSimGoto(unittest.TestCase):
         self.guided.stop()
         before = self.robot.pose()
         self.assertEqual(self.robot.act('move', 0.5), Event.NO_PROGRESS)
-        rospy.sleep(0.5)         # sim time: the base comes to rest
-        after = self.robot.pose()
+        after = self.robot.wait_at_rest()
         went = math.hypot(after[0] - before[0], after[1] - before[1])
         rospy.loginfo('guided poses stopped: the move went %.3f m, then no_progress', went)
         self.assertLess(went, 0.06)
@@ -191,10 +186,8 @@ class TestSimGoto(unittest.TestCase):
         self.assertEqual(self.robot.act('move', 0.5), Event.NO_PROGRESS)
         ended = rospy.get_time()
         # at rest, and an odom_commanded stamped after it (idle: 1 Hz)
-        deadline = time.monotonic() + 10
-        while self.commanded.last.header.stamp.to_sec() < ended + 1.0:
-            self.assertLess(time.monotonic(), deadline, 'no odom_commanded after the move')
-            time.sleep(0.05)
+        wait_for(lambda: self.commanded.last.header.stamp.to_sec() >= ended + 1.0, 10,
+                 'an odom_commanded stamped after the move')
         c1, t1 = self.commanded.last.pose.pose.position, self.robot.pose()
         commanded = math.hypot(c1.x - c0.x, c1.y - c0.y)
         true = math.hypot(t1[0] - t0[0], t1[1] - t0[1])

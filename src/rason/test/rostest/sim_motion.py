@@ -77,8 +77,7 @@ class TestSimMotion(unittest.TestCase):
     def test_healthy_turn_right_90(self):
         start = self.robot.pose()
         self.assertEqual(self.robot.act('turn', 90), Event.OK)
-        rospy.sleep(0.5)  # let the base come to rest
-        turned = wrap_degrees(math.degrees(self.robot.pose()[2] - start[2]))
+        turned = wrap_degrees(math.degrees(self.robot.wait_at_rest()[2] - start[2]))
         rospy.loginfo('turn(90): turned %.2f deg', turned)
         self.assertAlmostEqual(turned, -90.0, delta=3.0)  # turn(+D) is clockwise
         self.assertLess(self.moved(start), 0.03)
