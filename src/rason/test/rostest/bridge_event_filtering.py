@@ -9,7 +9,7 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
-from rason_testing import LogWatcher, feedback, start_agents, wait_for_subscribers  # noqa: E402
+from rason_testing import LogWatcher, feedback, start_agents, wait_for, wait_for_subscribers  # noqa: E402
 from rason_msgs.msg import Action, Event  # noqa: E402
 
 
@@ -27,10 +27,7 @@ class TestEventFiltering(unittest.TestCase):
 
     def test_only_well_formed_feedback_for_this_agent_and_action_counts(self):
         self.assertTrue(wait_for_subscribers(self.events))
-        deadline = rospy.Time.now() + rospy.Duration(20)
-        while not self.actions and rospy.Time.now() < deadline:
-            rospy.sleep(0.05)
-        self.assertTrue(self.actions, 'hold(1) was never published')
+        wait_for(lambda: self.actions, 20, 'hold(1) to be published')
         action_id = self.actions[0].action_id
 
         # Each event to ignore carries a failure reason of its own: had one reached the

@@ -8,7 +8,7 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
-from rason_testing import LogWatcher, start_agents  # noqa: E402
+from rason_testing import LogWatcher, poll, start_agents  # noqa: E402
 from rason_msgs.msg import Action, Event  # noqa: E402
 
 
@@ -34,9 +34,7 @@ class TestIntentions(unittest.TestCase):
 
     def test_action_is_published_in_the_namespace_with_its_parameters(self):
         self.assertTrue(self.log.wait_for(r'slow started', timeout=30))
-        deadline = rospy.Time.now() + rospy.Duration(5)
-        while len(self.actions) < 2 and rospy.Time.now() < deadline:
-            rospy.sleep(0.05)
+        poll(lambda: len(self.actions) >= 2, 5)  # the list is checked whole below
         self.assertEqual(rospy.resolve_name('jason/action'), '/robot1/jason/action')
         # a (re)started bridge first stops whatever an earlier run of it left, then acts
         self.assertEqual([(a.agent, a.action, list(a.parameters)) for a in self.actions],

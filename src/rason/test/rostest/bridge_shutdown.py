@@ -12,7 +12,7 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
-from rason_testing import HERE, LogWatcher, wait_for_subscribers  # noqa: E402
+from rason_testing import HERE, LogWatcher, wait_for, wait_for_subscribers  # noqa: E402
 from rason_msgs.msg import Action, Perception  # noqa: E402
 
 
@@ -40,10 +40,7 @@ class TestShutdown(unittest.TestCase):
             self.assertTrue(wait_for_subscribers(go, timeout=30))
             self.assertTrue(self.log.wait_ready())
             go.publish(Perception(source='rostest_start', perception=['go']))
-            deadline = time.monotonic() + 20
-            while not any(a.agent == 'holder' for a in self.actions) and time.monotonic() < deadline:
-                time.sleep(0.05)
-            self.assertTrue(any(a.agent == 'holder' for a in self.actions), 'hold(1) was never published')
+            wait_for(lambda: any(a.agent == 'holder' for a in self.actions), 20, 'hold(1) to be published')
             go.unregister()
             sent = time.monotonic()
             proc.send_signal(signum)

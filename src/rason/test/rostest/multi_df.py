@@ -16,7 +16,7 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
-from rason_testing import HERE, LogWatcher, Robot, run, start_mas, stop_mas  # noqa: E402
+from rason_testing import HERE, LogWatcher, Robot, poll, run, start_mas, stop_mas  # noqa: E402
 from rason_msgs.msg import Presence  # noqa: E402
 
 DF_AGENTS = os.path.join(HERE, 'agents', 'df')
@@ -71,16 +71,18 @@ class TestDirectoryAcrossRobots(unittest.TestCase):
             type(self).late = None
 
     def until(self, robot, agent, command, expect, timeout=15.0):
-        """Run command until it answers expect (what the agent knows may still be on its way)."""
-        deadline = time.monotonic() + timeout
-        while True:
+        """Run command until it answers expect (what the agent knows may still be on its way);
+        returns the last answer."""
+        answers = []
+
+        def answered():
             try:
-                got = run(self.log, robot, agent, command, r'\S+ .*', timeout=3)
+                answers.append(run(self.log, robot, agent, command, r'\S+ .*', timeout=3))
             except AssertionError as e:  # a robot just started may not have its link to us yet
-                got = str(e)
-            if got == expect or time.monotonic() > deadline:
-                return got
-            time.sleep(0.2)
+                answers.append(str(e))
+            return answers[-1] == expect
+        poll(answered, timeout, interval=0.2)
+        return answers[-1]
 
     def test_df_is_nobodys_agent(self):
         self.start_late_robot()  # it uses the directory too, and everyone hears of it now
@@ -88,9 +90,7 @@ class TestDirectoryAcrossRobots(unittest.TestCase):
             self.expect(r'^presence: agent lookout is reachable$', node=node)
         # a clash line would have come before the reachable line of the same announcement
         self.assertEqual([], self.log.lines(r"agent name 'df'|announced by both|hosted here and also announced"))
-        deadline = time.monotonic() + 5
-        while len(self.announced) < 4 and time.monotonic() < deadline:
-            time.sleep(0.05)
+        poll(lambda: len(self.announced) >= 4, 5, interval=0.05)
         self.assertEqual(self.announced, {'/robot1/rason_mas': ['dispatcher'], '/robot2/rason_mas': ['swift'],
                                           '/robot3/rason_mas': ['steady'], '/robot4/rason_mas': ['bargain', 'lookout']})
         self.assertEqual(self.until(self.robot4, 'lookout', 'search', 'found [bargain,steady,swift]'),

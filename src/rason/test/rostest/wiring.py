@@ -16,7 +16,7 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
-from rason_testing import LogWatcher, Robot, run, run_refused_node  # noqa: E402
+from rason_testing import LogWatcher, Robot, run, run_refused_node, wait_for  # noqa: E402
 from move_base_msgs.msg import MoveBaseAction, MoveBaseFeedback  # noqa: E402
 from std_msgs.msg import String  # noqa: E402
 from std_srvs.srv import SetBool, SetBoolResponse, Trigger, TriggerResponse  # noqa: E402
@@ -109,12 +109,8 @@ class TestWiring(unittest.TestCase):
         if not cls.log.wait_ready():
             raise AssertionError('not connected to every /rosout publisher')
         # the decomposer's publisher must reach us before the agent says anything
-        deadline = time.monotonic() + 20
-        while not rospy.get_published_topics() or not any(
-                t == '/%s/speech' % NS for t, _ in rospy.get_published_topics()):
-            if time.monotonic() > deadline:
-                raise AssertionError('generic_decomposer never advertised speech')
-            time.sleep(0.05)
+        wait_for(lambda: any(t == '/%s/speech' % NS for t, _ in rospy.get_published_topics()), 20,
+                 'generic_decomposer to advertise speech', interval=0.05)
 
     @staticmethod
     def _explode(_request):
@@ -188,10 +184,8 @@ class TestWiring(unittest.TestCase):
         self.assertTrue(self.move_base.seen.wait_for(lambda s: s == ('cancel', ENDLESS_X), timeout=5),
                         'the server never saw the cancel')
         # the perception of the goal is cleared once it is taken back
-        deadline = time.monotonic() + 5
-        while not [l for l in self.log.lines(r'^\[wirer\] no position$') if l[0] >= dropped[0][0]]:
-            self.assertLess(time.monotonic(), deadline, 'at(X, Y) was not cleared')
-            time.sleep(0.05)
+        wait_for(lambda: [l for l in self.log.lines(r'^\[wirer\] no position$') if l[0] >= dropped[0][0]], 5,
+                 'at(X, Y) to be cleared')
         self.assertFalse(self.log.lines(r'drive (arrived|failed)'))
 
     # ---------------------------------------------------------------- malformed configurations
