@@ -34,17 +34,6 @@ def wait_for(predicate, timeout, what, interval=0.02):
     return value
 
 
-def assert_nothing_within(predicate, seconds, what, interval=0.02):
-    """Fail as soon as ``predicate`` returns something true during ``seconds``. It waits the
-    whole time on purpose: only a look that long shows that something does not happen."""
-    deadline = time.monotonic() + seconds
-    while time.monotonic() < deadline:
-        value = predicate()
-        if value:
-            raise AssertionError('%s: %r' % (what, value))
-        time.sleep(interval)
-
-
 class LogWatcher(object):
     """Collects every rosout line (with the time it was heard) and waits for patterns."""
 
