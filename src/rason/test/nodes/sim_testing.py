@@ -4,6 +4,7 @@ import math
 import threading
 import time
 
+import rosgraph
 import rospy
 from geometry_msgs.msg import Pose2D, PoseStamped, Twist
 from nav_msgs.msg import Odometry
@@ -83,10 +84,21 @@ class SimRobot(object):
             return self._pose
 
     def wait_connected(self, actions=True, timeout=15.0):
-        """Wait until the simulator (and, with ``actions``, the decomposer) listen to us:
-        a message published before the connection is up is lost."""
-        return bool(poll(lambda: self._teleport.get_num_connections() and (
-            not actions or self._actions.get_num_connections()), timeout, interval=0.05))
+        """Wait until the simulator (and, with ``actions``, the decomposer /<name>/motion_decomp)
+        listen to us: a message published before the connection is up is lost. Another node
+        listening to jason/action (a diagnosis_reporter) does not stand in for the decomposer."""
+        decomposer = '/%s/motion_decomp' % self.name
+        master = rosgraph.Master(rospy.get_name())
+
+        def listening():
+            if not self._teleport.get_num_connections():
+                return False
+            if not actions:
+                return True
+            _, subscribers, _ = master.getSystemState()
+            nodes = next((n for t, n in subscribers if t == self._actions.resolved_name), [])
+            return decomposer in nodes and self._actions.get_num_connections() >= len(nodes)
+        return bool(poll(listening, timeout, interval=0.05))
 
     def teleport(self, x, y, yaw, settle=0.3):
         """Put the robot at (x, y, yaw rad) and wait (sim time) until the pose shows it."""
