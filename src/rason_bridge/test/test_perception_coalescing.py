@@ -1,11 +1,26 @@
 """Perception messages coalesced per source (rason_bridge.coalesce): latest list wins,
 sources in turn, a bounded table, a summary of what was overtaken."""
+import sys
 import threading
 import time
 
 import pytest
 
 from rason_bridge.coalesce import ADDED, DROPPED, REPLACED, FloodEnd, PerceptionCoalescer
+
+
+def blocked_in_a_wait(thread, timeout=5.0):
+    """Wait until ``thread`` waits on a threading.Condition (a put waiting for room);
+    fails after ``timeout`` s."""
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        frame = sys._current_frames().get(thread.ident)
+        while frame is not None:
+            if frame.f_code is threading.Condition.wait.__code__:
+                return
+            frame = frame.f_back
+        time.sleep(0.001)
+    pytest.fail('the thread never waited on a condition')
 
 
 def test_the_newest_message_of_a_source_wins():
@@ -91,7 +106,7 @@ def test_a_new_source_waits_for_room_before_it_is_dropped():
     outcome = []
     t = threading.Thread(target=lambda: outcome.append(c.put('b', ['y'], 1, wait=10.0)))
     t.start()
-    time.sleep(0.05)
+    blocked_in_a_wait(t)
     assert outcome == [], 'waiting for room'
     assert c.take(0) == ('a', ['x'], 0)
     t.join(5.0)
@@ -109,7 +124,7 @@ def test_a_waiting_put_joins_its_source_when_another_connection_added_it():
     outcome = []
     t = threading.Thread(target=lambda: outcome.append(c.put('b', ['y(2)'], 2, wait=10.0)))
     t.start()
-    time.sleep(0.05)
+    blocked_in_a_wait(t)
     c.take(0)
     c.put('b', ['y(1)'], 1)  # whichever comes first, the other replaces it: b waits once
     t.join(5.0)
@@ -122,7 +137,7 @@ def test_closing_releases_a_waiting_put():
     outcome = []
     t = threading.Thread(target=lambda: outcome.append(c.put('b', ['y'], 1, wait=10.0)))
     t.start()
-    time.sleep(0.05)
+    blocked_in_a_wait(t)
     c.close()
     t.join(5.0)
     assert outcome == [DROPPED]

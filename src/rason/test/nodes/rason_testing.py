@@ -1,5 +1,5 @@
-"""Helpers shared by the rostest scripts: watching rosout, publishing feedback, and
-commanding and starting the agents of the multi-robot tests."""
+"""Helpers shared by the rostest scripts: waiting on a condition with a deadline, watching
+rosout, publishing feedback, and commanding and starting the agents of the multi-robot tests."""
 import itertools
 import os
 import re
@@ -13,6 +13,25 @@ import rospkg
 import rospy
 from rosgraph_msgs.msg import Log
 from rason_msgs.msg import AgentMessage, Event, Perception, Presence
+
+
+def poll(predicate, timeout, interval=0.02):
+    """Call ``predicate`` until it returns something true, and return that; None once
+    ``timeout`` s have passed (or ROS shut down) without it."""
+    deadline = time.monotonic() + timeout
+    while True:
+        value = predicate()
+        if value or time.monotonic() >= deadline or rospy.is_shutdown():
+            return value or None
+        time.sleep(interval)
+
+
+def wait_for(predicate, timeout, what, interval=0.02):
+    """:func:`poll`, failing with an AssertionError that names ``what`` was awaited."""
+    value = poll(predicate, timeout, interval)
+    if not value:
+        raise AssertionError('waited %.1f s for %s in vain' % (timeout, what))
+    return value
 
 
 class LogWatcher(object):
@@ -31,14 +50,12 @@ class LogWatcher(object):
     def wait_ready(self, timeout=20.0):
         """Wait until this watcher is connected to every node that publishes on /rosout."""
         master = rosgraph.Master(rospy.get_name())
-        deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline and not rospy.is_shutdown():
+
+        def connected_to_all():
             publishers, _, _ = master.getSystemState()
             listed = sum(len(n) for t, n in publishers if t == '/rosout')
-            if listed and self._sub.get_num_connections() >= listed:
-                return True
-            time.sleep(0.02)
-        return False
+            return listed and self._sub.get_num_connections() >= listed
+        return bool(poll(connected_to_all, timeout))
 
     def clear(self):
         with self._cond:
@@ -49,6 +66,22 @@ class LogWatcher(object):
         with self._cond:
             return [l for l in self._lines if (pattern is None or re.search(pattern, l[3]))
                     and (node is None or l[2] == node)]
+
+    def wait_quiet(self, seconds, pattern=None, timeout=30.0):
+        """Wait until no line matching ``pattern`` has come for ``seconds``, counted from now
+        at the earliest: for a test that needs, say, an agent left idle that long. Fails after
+        ``timeout`` s of lines still coming."""
+        start = time.monotonic()
+        with self._cond:
+            while True:
+                now = time.monotonic()
+                heard = [l[0] for l in self._lines if pattern is None or re.search(pattern, l[3])]
+                quiet_since = max([start] + heard)
+                if now - quiet_since >= seconds:
+                    return
+                if now - start >= timeout:
+                    raise AssertionError('lines matching %r still came after %.0f s' % (pattern, timeout))
+                self._cond.wait(min(seconds - (now - quiet_since), 0.1))
 
     def wait_for(self, pattern, timeout=20.0, count=1, node=None):
         """Wait until ``count`` lines match (from ``node`` if given); returns them (empty on timeout)."""
@@ -71,10 +104,8 @@ def feedback(agent, result, action_id, event_type=Event.ACTION_FEEDBACK):
 
 
 def wait_for_subscribers(pub, count=1, timeout=10.0):
-    deadline = time.monotonic() + timeout
-    while pub.get_num_connections() < count and time.monotonic() < deadline:
-        time.sleep(0.02)
-    return pub.get_num_connections() >= count
+    """True once ``pub`` has ``count`` subscribers, False if it has not after ``timeout`` s."""
+    return bool(poll(lambda: pub.get_num_connections() >= count, timeout))
 
 
 def start_agents(log, timeout=20.0):

@@ -4,10 +4,12 @@ import math
 import threading
 import time
 
+import rosgraph
 import rospy
 from geometry_msgs.msg import Pose2D, PoseStamped, Twist
 from nav_msgs.msg import Odometry
 from rason_msgs.msg import Action, Event
+from rason_testing import poll
 
 # Where the simulator mounts the Kinect on the helper (rason_sim world.h CameraConfig).
 CAMERA_FORWARD = 0.08
@@ -82,31 +84,52 @@ class SimRobot(object):
             return self._pose
 
     def wait_connected(self, actions=True, timeout=15.0):
-        """Wait until the simulator (and, with ``actions``, the decomposer) listen to us:
-        a message published before the connection is up is lost."""
-        deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline and not rospy.is_shutdown():
-            if self._teleport.get_num_connections() and (
-                    not actions or self._actions.get_num_connections()):
+        """Wait until the simulator (and, with ``actions``, the decomposer /<name>/motion_decomp)
+        listen to us: a message published before the connection is up is lost. Another node
+        listening to jason/action (a diagnosis_reporter) does not stand in for the decomposer."""
+        decomposer = '/%s/motion_decomp' % self.name
+        master = rosgraph.Master(rospy.get_name())
+
+        def listening():
+            if not self._teleport.get_num_connections():
+                return False
+            if not actions:
                 return True
-            time.sleep(0.05)
-        return False
+            _, subscribers, _ = master.getSystemState()
+            nodes = next((n for t, n in subscribers if t == self._actions.resolved_name), [])
+            return decomposer in nodes and self._actions.get_num_connections() >= len(nodes)
+        return bool(poll(listening, timeout, interval=0.05))
 
     def teleport(self, x, y, yaw, settle=0.3):
         """Put the robot at (x, y, yaw rad) and wait (sim time) until the pose shows it."""
         if not self.wait_connected(actions=False):
             raise RuntimeError('the simulator does not listen to /%s/set_pose' % self.name)
         self._teleport.publish(Pose2D(x=x, y=y, theta=yaw))
-        deadline = time.monotonic() + 10.0
+
+        def there():
+            p = self.pose()
+            return math.hypot(p[0] - x, p[1] - y) < 0.01 and abs(math.remainder(p[2] - yaw, 2 * math.pi)) < 0.01
+        if not poll(there, 10.0):
+            raise RuntimeError('%s did not reach the teleport pose: %s' % (self.name, self.pose()))
+        # settle s of sim time on purpose: camera frames rendered before the teleport are
+        # published by then, and the physics has had its steps after the jump
+        rospy.sleep(settle)
+
+    def wait_at_rest(self, still=0.5, timeout=20.0):
+        """Wait until the true pose has stayed within 1 mm and 0.1 degree for ``still`` s of sim
+        time; returns that pose. Fails after ``timeout`` s (wall) of movement."""
+        deadline = time.monotonic() + timeout
+        ref, since = self.pose(), rospy.get_time()
         while True:
             p = self.pose()
-            if math.hypot(p[0] - x, p[1] - y) < 0.01 and abs(
-                    math.remainder(p[2] - yaw, 2 * math.pi)) < 0.01:
-                break
+            if math.hypot(p[0] - ref[0], p[1] - ref[1]) > 0.001 or abs(
+                    math.degrees(math.remainder(p[2] - ref[2], 2 * math.pi))) > 0.1:
+                ref, since = p, rospy.get_time()
+            elif rospy.get_time() - since >= still:
+                return p
             if time.monotonic() > deadline:
-                raise RuntimeError('%s did not reach the teleport pose: %s' % (self.name, p))
+                raise AssertionError('%s did not come to rest within %.0f s: %s' % (self.name, timeout, p))
             time.sleep(0.02)
-        rospy.sleep(settle)
 
     def act(self, action, *parameters, timeout=120.0):
         """Publish a decomposer action and return its result (Event.OK or a failure reason)."""
