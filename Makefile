@@ -36,10 +36,10 @@ FLEET_KEY := $(ROS_HOME)/rason/fleet.key
 
 help:
 	@echo "make demo   - set up, then run the case study (both actuators faulty) in the simulator"
-	@echo "make test   - set up, then run unit tests (JUnit, pytest) and rostests"
+	@echo "make test   - set up, then build the docs and run unit tests (JUnit, pytest) and rostests"
 	@echo "make docs   - build the documentation site (docs/ -> build/site), failing on broken links"
 	@echo "make setup  - install Debian packages, build jason_lib (Maven) and the catkin workspace, make a fleet key"
-	@echo "make bench  - benchmarks (see README)"
+	@echo "make bench  - benchmarks (see docs/guides/benchmarks.md)"
 	@echo "make rate-check - the case study at real-time factor 1 and 0: same diagnosis, steps within 10 %"
 	@echo "make rviz   - install rviz if missing, then show the simulated world (run beside make demo)"
 
@@ -65,7 +65,7 @@ catkin:
 	  --cmake-args -Wno-dev > build.log 2>&1 || { tail -40 build.log; exit 1; }
 	@echo "catkin: workspace built (log: build.log)"
 
-# Made once (a random key, mode 0600), never overwritten: see README "Security".
+# Made once (a random key, mode 0600), never overwritten: see docs/guides/security.md.
 $(FLEET_KEY):
 	@PYTHONPATH=$(CURDIR)/src/rason_bridge/src $(PY) -m rason_bridge.fleet_key $@
 
