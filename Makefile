@@ -21,7 +21,8 @@ APT_PACKAGES := catkin ros-message-generation ros-message-runtime libstd-msgs-de
   python3-actionlib python3-actionlib-msgs ros-actionlib-msgs python3-std-srvs ros-std-srvs \
   python3-move-base-msgs ros-move-base-msgs \
   python3-selenium chromium chromium-driver python3-visualization-msgs ros-visualization-msgs python3-yaml \
-  mosquitto mosquitto-clients nftables iproute2
+  mosquitto mosquitto-clients nftables iproute2 \
+  mkdocs mkdocs-material python3-pymdownx
 
 # Environment of every ROS command: the workspace's devel space, logs in build/.
 export PYENV_VERSION := system
@@ -32,13 +33,14 @@ ROSENV := set +u; source $(CURDIR)/devel/setup.bash; set -u;
 # The fleet key of every rason_mas started through make (its default place under ROS_HOME).
 FLEET_KEY := $(ROS_HOME)/rason/fleet.key
 
-.PHONY: help setup apt jason_lib catkin test javatest unit rostest demo bench rate-check rviz clean
+.PHONY: help setup apt jason_lib catkin test docs javatest unit rostest demo bench rate-check rviz clean
 
 help:
 	@echo "make demo   - set up, then run the case study (both actuators faulty) in the simulator"
-	@echo "make test   - set up, then run unit tests (JUnit, pytest) and rostests"
+	@echo "make test   - set up, then build the docs and run unit tests (JUnit, pytest) and rostests"
+	@echo "make docs   - build the documentation site (docs/ -> build/site), failing on broken links"
 	@echo "make setup  - install Debian packages, build jason_lib (Maven) and the catkin workspace, make a fleet key"
-	@echo "make bench  - benchmarks (see README)"
+	@echo "make bench  - benchmarks (see docs/guides/benchmarks.md)"
 	@echo "make rate-check - the case study at real-time factor 1 and 0: same diagnosis, steps within 10 %"
 	@echo "make rviz   - install rviz if missing, then show the simulated world (run beside make demo)"
 
@@ -64,12 +66,18 @@ catkin:
 	  --cmake-args -Wno-dev > build.log 2>&1 || { tail -40 build.log; exit 1; }
 	@echo "catkin: workspace built (log: build.log)"
 
-# Made once (a random key, mode 0600), never overwritten: see README "Security".
+# Made once (a random key, mode 0600), never overwritten: see docs/guides/security.md.
 $(FLEET_KEY):
 	@PYTHONPATH=$(CURDIR)/src/rason_bridge/src $(PY) -m rason_bridge.fleet_key $@
 
 test: setup
-	@$(MAKE) --no-print-directory javatest unit rostest
+	@$(MAKE) --no-print-directory docs javatest unit rostest
+
+# The site under build/site, offline (no CDN, no web fonts); --strict fails on a missing page
+# or include, check_site_links on a missing anchor.
+docs: apt
+	mkdocs build --strict --quiet
+	$(PY) tools/check_site_links.py build/site
 
 # JUnit (Surefire) for jason_lib, no ROS needed; prints Surefire's summary.
 javatest:
