@@ -19,7 +19,7 @@ APT_PACKAGES := catkin ros-message-generation ros-message-runtime libstd-msgs-de
   libroscpp-dev libgeometry-msgs-dev libros-rosgraph-msgs-dev libtf2-msgs-dev \
   libmujoco-dev libqhull-dev libosmesa6-dev libgtest-dev python3-matplotlib python3-psutil \
   python3-actionlib python3-actionlib-msgs ros-actionlib-msgs python3-std-srvs ros-std-srvs \
-  python3-move-base-msgs ros-move-base-msgs \
+  python3-move-base-msgs ros-move-base-msgs mosquitto mosquitto-clients \
   python3-selenium chromium chromium-driver python3-visualization-msgs ros-visualization-msgs python3-yaml
 
 # Environment of every ROS command: the workspace's devel space, logs in build/.

@@ -1,0 +1,89 @@
+package rason.messaging.mqtt;
+
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * A mosquitto broker of a test on 127.0.0.1, on a free port, with a configuration of its own
+ * (anonymous clients, no persistence); the test is skipped if mosquitto is not installed.
+ */
+public final class MosquittoBroker implements AutoCloseable {
+
+    private static final List<String> PLACES = List.of("/usr/sbin/mosquitto", "/usr/bin/mosquitto",
+            "/usr/local/sbin/mosquitto");
+    private static final long START_MS = 10_000;
+
+    private final Process process;
+    private final int port;
+
+    private MosquittoBroker(Process process, int port) {
+        this.process = process;
+        this.port = port;
+    }
+
+    /** The binary, or null if there is none. */
+    static Path binary() {
+        for (String p : PLACES)
+            if (Files.isExecutable(Path.of(p)))
+                return Path.of(p);
+        return null;
+    }
+
+    /** Starts a broker (its configuration and log in dir) and waits until it takes connections. */
+    public static MosquittoBroker start(Path dir) throws IOException, InterruptedException {
+        Path bin = binary();
+        assumeTrue(bin != null, "mosquitto is not installed (apt-get install -y mosquitto): MQTT tests skipped");
+        int port;
+        try (ServerSocket s = new ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
+            port = s.getLocalPort();
+        }
+        Path conf = dir.resolve("mosquitto.conf");
+        Files.writeString(conf, "listener " + port + " 127.0.0.1\nallow_anonymous true\npersistence false\n"
+                + "log_dest stderr\nlog_type error\nlog_type warning\nlog_type notice\n");
+        Process p = new ProcessBuilder(bin.toString(), "-c", conf.toString())
+                .redirectErrorStream(true).redirectOutput(dir.resolve("mosquitto.log").toFile()).start();
+        MosquittoBroker broker = new MosquittoBroker(p, port);
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(START_MS);
+        while (!broker.takesConnections()) {
+            if (!p.isAlive() || System.nanoTime() > deadline) {
+                broker.close();
+                throw new IllegalStateException("mosquitto did not start on port " + port + ": "
+                        + Files.readString(dir.resolve("mosquitto.log")));
+            }
+            Thread.sleep(10); // polling the port, with the deadline above
+        }
+        return broker;
+    }
+
+    private boolean takesConnections() {
+        try (Socket s = new Socket()) {
+            s.connect(new InetSocketAddress("127.0.0.1", port), 200);
+            return true;
+        } catch (IOException e) {
+            return false;
+        }
+    }
+
+    public int port() {
+        return port;
+    }
+
+    public String url() {
+        return "tcp://127.0.0.1:" + port;
+    }
+
+    @Override
+    public void close() throws InterruptedException {
+        process.destroy();
+        if (!process.waitFor(5, TimeUnit.SECONDS))
+            process.destroyForcibly().waitFor(5, TimeUnit.SECONDS);
+    }
+}
