@@ -31,9 +31,9 @@ from rason_bridge.inbound import Inbound
 from rason_bridge.jvm import JvmError, start_jvm
 from rason_bridge.log_pump import LogPump
 from rason_bridge.message_sender import HELD, MessageSender
+from rason_bridge.params import MQTT, ParamError, read_settings
 from rason_bridge.mind_publisher import MindPublisher
 from rason_bridge.outbound_pump import OutboundItems, OutboundPump
-from rason_bridge.params import ParamError, read_settings
 from rason_bridge.perception_pump import PerceptionPump
 from rason_bridge.presence_loop import PresenceLoop
 
@@ -74,8 +74,12 @@ class RasonMasNode(object):
             publish=self._action_pub.publish, connected=self._action_pub.get_num_connections,
             listed=lambda: self._graph.listed_subscribers(self._action_topic, self._action_pub),
             fail=self._action_not_sent, connect_wait=s.connect_wait)
-        self._message_pub = rospy.Publisher(s.messages_topic, AgentMessage, queue_size=1000, tcp_nodelay=True)
-        self._presence_pub = rospy.Publisher(s.presence_topic, Presence, queue_size=10, tcp_nodelay=True)
+        # with fleet_channel mqtt, Java's MQTT channel carries messages and presence: no fleet topics here
+        self._over_ros = s.fleet_channel != MQTT
+        self._message_pub = self._presence_pub = None
+        if self._over_ros:
+            self._message_pub = rospy.Publisher(s.messages_topic, AgentMessage, queue_size=1000, tcp_nodelay=True)
+            self._presence_pub = rospy.Publisher(s.presence_topic, Presence, queue_size=10, tcp_nodelay=True)
         # signed when published, in publishing order, so the sequence numbers arrive increasing
         self._messages = MessageSender(publish=self._sign_and_publish,
                                        linked=lambda mas: ros_links.linked(self._message_pub, mas),
@@ -116,20 +120,25 @@ class RasonMasNode(object):
         return names
 
     def configure_auth(self):
-        """Sign and check with the fleet key, or not at all (after :meth:`load`, before :meth:`start`).
+        """Sign and check with the fleet key, or not at all, and take the fleet channel (after
+        :meth:`load`, before :meth:`start`).
 
         :raises java_config.FleetKeyError: authentication is required and the key cannot be loaded
+        :raises ParamError: MQTT settings Java refuses
         """
         if self.settings.fleet_auth != OFF and self.settings.fleet_key is not None:
             rospy.logwarn('the fleet key comes from ~fleet_key: anyone who reaches the ROS master can read the '
                           'parameter server, and with it command these agents; prefer ~fleet_key_file')
         java_config.push_auth(self._bridge, self.settings)
+        java_config.use_channel(self._bridge, self.settings)
 
     def start(self):
         """Subscribe to the jason/* topics and start the agents' reasoning."""
         self._actions.refresh_listed()
         self._perceptions.start()
-        self._inbound.subscribe(self.settings.messages_topic, self.settings.presence_topic)
+        if self._over_ros:
+            self._inbound.subscribe_fleet(self.settings.messages_topic, self.settings.presence_topic)
+        self._inbound.subscribe()
         # Feedback from a decomposer that is not connected yet would be lost:
         # let the running ones connect before the agents act.
         self._graph.wait_for_publishers(self._inbound.events, self.settings.connect_wait)
@@ -153,6 +162,8 @@ class RasonMasNode(object):
             return
         self._stopping = True
         self._presence.leave()  # first, so the other processes stop counting on our agents at once
+        if not self._over_ros:
+            self._bridge.leaveFleet(1000)
         if self._mind is not None:
             self._mind.stop()
         self._perceptions.stop()
@@ -179,11 +190,14 @@ class RasonMasNode(object):
     # ---- presence -------------------------------------------------------------------
 
     def _presence_tick(self):
-        self._channel.presenceTick(ros_links.linked_processes(self._message_pub))
+        if self._over_ros:  # the MQTT channel checks silences itself
+            self._channel.presenceTick(ros_links.linked_processes(self._message_pub))
         self._bridge.actions().decomposersTick(ros_links.event_publishers(self._inbound.events))
 
     def _publish_presence(self, leaving):
         # called under the presence loop's lock: signed in publishing order
+        if not self._over_ros:
+            return  # the MQTT channel announces itself
         try:
             self._presence_pub.publish(signed.presence(self._channel, self._bridge.agentNames(), self.mas_id, self.settings.presence_period,
                                                        leaving))
@@ -209,6 +223,9 @@ class RasonMasNode(object):
             self._held.wake()
 
     def publish_message(self, sender, receiver_mas, receiver, performative, content, msg_id, in_reply_to):
+        if not self._over_ros:
+            rospy.logwarn('[%s] %s to %s not sent: the fleet channel is mqtt', sender, performative, receiver)
+            return
         msg = AgentMessage(sender_mas=self.mas_id, sender=sender, receiver_mas=receiver_mas, receiver=receiver,
                            performative=performative, content=content, msg_id=msg_id, in_reply_to=in_reply_to)
         try:
@@ -267,6 +284,10 @@ def main(argv=None):
         return 1
     try:
         node.configure_auth()  # after load: Java's log lines reach rosout from then on
+    except ParamError as e:
+        node.close_log()
+        rospy.logfatal('bad parameter: %s', e)
+        return 1
     except java_config.FleetKeyError as e:
         node.close_log()
         rospy.logfatal('fleet authentication is required (~fleet_auth) but there is no usable fleet key: %s. %s',
