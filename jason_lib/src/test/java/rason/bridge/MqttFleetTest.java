@@ -60,6 +60,7 @@ class MqttFleetTest {
     Path dir;
 
     private MosquittoBroker broker;
+    private boolean authOff = false;
     private final List<String> warnings = new CopyOnWriteArrayList<>();
     private final Handler capture = new Handler() {
         @Override
@@ -99,7 +100,10 @@ class MqttFleetTest {
     private void join(Bridge robot, String mas) {
         robot.fleet().setMasId(mas);
         robot.fleet().setIncarnation(FleetAuth.wallNanos());
-        robot.fleet().requireKeyText(KEY, "test");
+        if (authOff)
+            robot.fleet().authOff();
+        else
+            robot.fleet().requireKeyText(KEY, "test");
         robot.fleet().setPresenceTimeoutNanos(DEPARTURE_LIMIT_NANOS);
         robot.useMqtt(new MqttSettings(broker.url(), "rason/", 60, PERIOD_NANOS, "", "", ""));
     }
@@ -165,6 +169,33 @@ class MqttFleetTest {
         await("three copies dropped as replayed", () -> warningsWith("replayed") >= before + 3);
         assertTrue(believes(bob, "heard(1)"), "still heard once");
         assertFalse(believes(bob, "heard(2)"));
+    }
+
+    @Test
+    void withAuthenticationOffTheChannelItselfDropsDuplicates() throws Exception {
+        authOff = true;
+        Mqtt5BlockingClient spy = keylessClient("spy");
+        BlockingQueue<Mqtt5Publish> seen = new LinkedBlockingQueue<>();
+        spy.toAsync().publishes(MqttGlobalPublishFilter.ALL, seen::add);
+        spy.subscribeWith().topicFilter("rason/inbox/#").qos(MqttQos.AT_LEAST_ONCE).send();
+        RosAgArch bob = twoRobotsAndAHello();
+        Mqtt5Publish hello = seen.poll(10, TimeUnit.SECONDS);
+        assertNotNull(hello, "the spy saw the hello");
+        for (int i = 0; i < 3; i++)
+            spy.publish(Mqtt5Publish.builder().topic(hello.getTopic()).qos(MqttQos.AT_LEAST_ONCE)
+                    .payload(hello.getPayloadAsBytes()).build());
+        await("three copies dropped", () -> robot2.mqttChannel().duplicatesDropped() >= 3);
+        assertTrue(believes(bob, "heard(1)"), "still heard once");
+        assertFalse(believes(bob, "heard(2)"));
+    }
+
+    @Test
+    void aChannelThatLeftTakesNoMoreMessages() throws Exception {
+        twoRobotsAndAHello();
+        robot1.leaveFleet(1000);
+        assertFalse(robot1.mqttChannel().send(new rason.messaging.WireMessage(ROBOT1, "alice", ROBOT2, "bob", "tell",
+                "late", "mid_late", "")), "refused: the agent's intention fails");
+        assertFalse(robot1.mqttChannel().announceNow());
     }
 
     @Test

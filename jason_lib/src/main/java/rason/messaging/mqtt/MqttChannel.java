@@ -398,7 +398,9 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
         } catch (Exception e) {
             logger.warning("mqtt: the leaving presence may not have gone out: " + e);
         }
-        client.disconnect().orTimeout(timeoutMillis, TimeUnit.MILLISECONDS).exceptionally(e -> null).join();
+        // a clean leave ends the session too: nothing is kept for a process that is gone
+        client.disconnectWith().sessionExpiryInterval(0).send().orTimeout(timeoutMillis, TimeUnit.MILLISECONDS)
+                .exceptionally(e -> null).join();
     }
 
     @Override
