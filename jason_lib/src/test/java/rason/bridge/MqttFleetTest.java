@@ -32,6 +32,7 @@ import com.hivemq.client.mqtt.mqtt5.message.publish.Mqtt5Publish;
 
 import rason.RosAgArch;
 import rason.messaging.FleetAuth;
+import rason.messaging.mqtt.BlackHoleProxy;
 import rason.messaging.mqtt.MosquittoBroker;
 import rason.messaging.mqtt.MqttSettings;
 import rason.messaging.mqtt.TestPayloads;
@@ -61,6 +62,9 @@ class MqttFleetTest {
 
     private MosquittoBroker broker;
     private boolean authOff = false;
+    /** robot1's way to the broker, if not direct. */
+    private BlackHoleProxy robot1Link = null;
+    private long presenceTimeoutNanos = DEPARTURE_LIMIT_NANOS;
     private final List<String> warnings = new CopyOnWriteArrayList<>();
     private final Handler capture = new Handler() {
         @Override
@@ -91,6 +95,8 @@ class MqttFleetTest {
                 c.disconnect();
         robot1.leaveFleet(1000);
         robot2.leaveFleet(1000);
+        if (robot1Link != null)
+            robot1Link.close();
         Logger.getLogger("rason.bridge").removeHandler(capture);
         if (broker != null)
             broker.close();
@@ -104,8 +110,9 @@ class MqttFleetTest {
             robot.fleet().authOff();
         else
             robot.fleet().requireKeyText(KEY, "test");
-        robot.fleet().setPresenceTimeoutNanos(DEPARTURE_LIMIT_NANOS);
-        robot.useMqtt(new MqttSettings(broker.url(), "rason/", 60, PERIOD_NANOS, "", "", ""));
+        robot.fleet().setPresenceTimeoutNanos(presenceTimeoutNanos);
+        String url = robot == robot1 && robot1Link != null ? robot1Link.url() : broker.url();
+        robot.useMqtt(new MqttSettings(url, "rason/", 60, PERIOD_NANOS, "", "", ""));
     }
 
     private RosAgArch start(RunningAgents agents, String name, String program) throws Exception {
@@ -235,6 +242,20 @@ class MqttFleetTest {
         System.out.printf("departure noticed after %.0f ms (last will)%n", took / 1e6);
         assertTrue(took < DEPARTURE_LIMIT_NANOS, "noticed after " + took / 1e6 + " ms");
         await("bob's present(alice) goes", () -> !believes(bob, "present(alice)"));
+    }
+
+    @Test
+    void aRobotWhoseLinkGoesQuietIsNoticedGoneBySilenceWithinTwoSeconds() throws Exception {
+        presenceTimeoutNanos = 1_500_000_000L; // heartbeats every 0.2 s: seven may be lost before it counts
+        robot1Link = new BlackHoleProxy(broker.port());
+        twoRobotsAndAHello();
+        long t0 = System.nanoTime();
+        robot1Link.blackHole(); // no close reaches the broker: no will before its keep-alive runs out (3 s)
+        await("robot2 notices alice gone", () -> !robot2.fleet().fleet().reachable().contains("alice"));
+        long took = System.nanoTime() - t0;
+        System.out.printf("departure noticed after %.0f ms (heartbeat silence)%n", took / 1e6);
+        assertTrue(took < DEPARTURE_LIMIT_NANOS, "noticed after " + took / 1e6 + " ms");
+        assertEquals(0, warningsWith("dropped last will"));
     }
 
     @Test
