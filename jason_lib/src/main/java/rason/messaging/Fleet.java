@@ -219,7 +219,9 @@ public final class Fleet {
         PresenceTable.Changes c = null;
         synchronized (presence) {
             Link current = links.get(mas);
-            if (refused == null && (current == null || link.isEmpty() || !current.id().equals(link)
+            if (refused == null && current == null)
+                return; // gone already (it left, or a retained will of an earlier run): nothing to say
+            if (refused == null && (link.isEmpty() || !current.id().equals(link)
                     || current.incarnation() != signed.incarnation()))
                 refused = new FleetAuth.Refusal(FleetAuth.Problem.REPLAYED, "the will of connection "
                         + InputLimits.abbreviate(link, 40) + ", which is not the one " + InputLimits.abbreviate(mas, 100)

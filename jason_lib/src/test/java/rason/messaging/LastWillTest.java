@@ -51,6 +51,19 @@ class LastWillTest {
     }
 
     @Test
+    void theWillOfARobotThatLeftOrIsUnknownIsIgnoredWithoutALine() {
+        FleetAuth.Signed will = robot2.auth.signWill(ROBOT2, "c1");
+        announceOver("c1");
+        robot2.announce(fleet, true, "bob");
+        int before = lines.texts().size();
+        fleet.willArrived(ROBOT2, "c1", will, ROBOT2); // the broker's retained will, heard after the leaving
+        fleet.willArrived("/robot7/rason_mas", "c7", new SigningPeer("/robot7/rason_mas", 1).auth
+                .signWill("/robot7/rason_mas", "c7"), "/robot7/rason_mas");
+        assertEquals(before, lines.texts().size(), String.valueOf(lines.texts()));
+        assertEquals(Set.of(), fleet.reachable());
+    }
+
+    @Test
     void aCopyOfAnEarlierConnectionsWillChangesNothing() {
         FleetAuth.Signed first = robot2.auth.signWill(ROBOT2, "c1");
         announceOver("c1");
