@@ -4,7 +4,7 @@
 port=${1:?usage: mqtt_broker.sh PORT}
 conf=$(mktemp "${TMPDIR:-/tmp}/rason-mosquitto.XXXXXX")
 trap 'rm -f "$conf"' EXIT INT TERM
-printf 'listener %s 127.0.0.1\nallow_anonymous true\npersistence false\nlog_dest stderr\n' "$port" > "$conf"
+printf 'listener %s 127.0.0.1\nallow_anonymous true\npersistence false\nset_tcp_nodelay true\nlog_dest stderr\n' "$port" > "$conf"
 for bin in /usr/sbin/mosquitto /usr/bin/mosquitto mosquitto; do
   if command -v "$bin" >/dev/null 2>&1; then
     "$bin" -c "$conf" &

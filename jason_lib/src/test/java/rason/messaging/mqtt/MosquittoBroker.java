@@ -46,7 +46,7 @@ public final class MosquittoBroker implements AutoCloseable {
             port = s.getLocalPort();
         }
         Path conf = dir.resolve("mosquitto.conf");
-        Files.writeString(conf, "listener " + port + " 127.0.0.1\nallow_anonymous true\npersistence false\n"
+        Files.writeString(conf, "listener " + port + " 127.0.0.1\nallow_anonymous true\npersistence false\nset_tcp_nodelay true\n"
                 + "log_dest stderr\nlog_type error\nlog_type warning\nlog_type notice\n");
         Process p = new ProcessBuilder(bin.toString(), "-c", conf.toString())
                 .redirectErrorStream(true).redirectOutput(dir.resolve("mosquitto.log").toFile()).start();
