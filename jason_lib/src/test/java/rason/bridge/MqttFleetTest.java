@@ -30,6 +30,7 @@ import com.hivemq.client.mqtt.mqtt5.Mqtt5BlockingClient;
 import com.hivemq.client.mqtt.mqtt5.Mqtt5Client;
 import com.hivemq.client.mqtt.mqtt5.message.publish.Mqtt5Publish;
 
+import jason.asSyntax.ASSyntax;
 import rason.RosAgArch;
 import rason.messaging.FleetAuth;
 import rason.messaging.mqtt.BlackHoleProxy;
@@ -256,6 +257,33 @@ class MqttFleetTest {
         System.out.printf("departure noticed after %.0f ms (heartbeat silence)%n", took / 1e6);
         assertTrue(took < DEPARTURE_LIMIT_NANOS, "noticed after " + took / 1e6 + " ms");
         assertEquals(0, warningsWith("dropped last will"));
+    }
+
+    @Test
+    void robotsThatStartBeforeTheBrokerOrOutliveItFindEachOtherAgainAndMessagesGoOnce() throws Exception {
+        int port = broker.port();
+        broker.close(); // nobody listens: the robots keep trying
+        join(robot1, ROBOT1);
+        join(robot2, ROBOT2);
+        RosAgArch bob = start(agents2, "bob", BOB);
+        RosAgArch alice = start(agents1, "alice", ALICE + "\n+!again <- .send(bob, tell, hello(2)); .send(bob, tell, done2).");
+        broker = MosquittoBroker.start(dir, port);
+        long up = System.nanoTime();
+        await("alice's messages at bob", () -> believes(bob, "finished(alice)"));
+        System.out.printf("first hello %.0f ms after the broker came up%n", (System.nanoTime() - up) / 1e6);
+        assertTrue(believes(bob, "heard(1)"));
+        broker.close(); // the broker goes away and comes back: each robot's session is gone with it
+        broker = MosquittoBroker.start(dir, port);
+        up = System.nanoTime();
+        await("both reconnected", () -> robot1.mqttChannel().isConnected() && robot2.mqttChannel().isConnected());
+        await("robot1 sees bob again", () -> robot1.fleet().fleet().reachable().contains("bob"));
+        System.out.printf("reconnected and present again %.0f ms after the broker came back%n",
+                (System.nanoTime() - up) / 1e6);
+        alice.getTS().getC().addAchvGoal(ASSyntax.parseLiteral("again"), null);
+        alice.wakeUpSense();
+        await("the second hello", () -> believes(bob, "heard(2)"));
+        await("and the message after it", () -> believes(bob, "done2"));
+        assertFalse(believes(bob, "heard(3)"), "each hello once");
     }
 
     @Test

@@ -39,12 +39,20 @@ public final class MosquittoBroker implements AutoCloseable {
 
     /** Starts a broker (its configuration and log in dir) and waits until it takes connections. */
     public static MosquittoBroker start(Path dir) throws IOException, InterruptedException {
+        return start(dir, freePort());
+    }
+
+    /** A port of 127.0.0.1 nobody listens on now. */
+    public static int freePort() throws IOException {
+        try (ServerSocket s = new ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
+            return s.getLocalPort();
+        }
+    }
+
+    /** The same, on the given port (a broker that comes back where it was). */
+    public static MosquittoBroker start(Path dir, int port) throws IOException, InterruptedException {
         Path bin = binary();
         assumeTrue(bin != null, "mosquitto is not installed (apt-get install -y mosquitto): MQTT tests skipped");
-        int port;
-        try (ServerSocket s = new ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
-            port = s.getLocalPort();
-        }
         Path conf = dir.resolve("mosquitto.conf");
         Files.writeString(conf, "listener " + port + " 127.0.0.1\nallow_anonymous true\npersistence false\nset_tcp_nodelay true\n"
                 + "log_dest stderr\nlog_type error\nlog_type warning\nlog_type notice\n");
