@@ -31,9 +31,9 @@ from rason_bridge.inbound import Inbound
 from rason_bridge.jvm import JvmError, start_jvm
 from rason_bridge.log_pump import LogPump
 from rason_bridge.message_sender import HELD, MessageSender
-from rason_bridge.params import MQTT, ParamError, read_settings
 from rason_bridge.mind_publisher import MindPublisher
 from rason_bridge.outbound_pump import OutboundItems, OutboundPump
+from rason_bridge.params import MQTT, ParamError, read_settings
 from rason_bridge.perception_pump import PerceptionPump
 from rason_bridge.presence_loop import PresenceLoop
 
