@@ -337,6 +337,9 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
         }
         try {
             String presenceOf = topics.presenceOf(topic);
+            if (p.isRetain() && (payload instanceof MqttPayloads.Will
+                    || payload instanceof MqttPayloads.Presence pr && pr.leaving()))
+                return; // kept by the broker for newcomers: news of a departure we never saw an arrival of
             if (presenceOf != null && payload instanceof MqttPayloads.Presence pr)
                 // published on presenceOf's topic: a presence naming another process is forged
                 port.presenceAnnounced(pr.mas(), pr.signed().incarnation(), pr.agents(), pr.dfAgents(),
