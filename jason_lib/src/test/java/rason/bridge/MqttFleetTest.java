@@ -199,8 +199,16 @@ class MqttFleetTest {
 
     @Test
     void aChannelThatLeftTakesNoMoreMessages() throws Exception {
-        twoRobotsAndAHello();
+        join(robot1, ROBOT1);
+        join(robot2, ROBOT2);
+        RosAgArch bob = start(agents2, "bob", BOB);
+        RosAgArch alice = start(agents1, "alice", ALICE
+                + "\n+!late <- .send(bob, tell, late).\n-!late[error(E)] <- +failed(E).");
+        await("alice's messages at bob", () -> believes(bob, "finished(alice)"));
         robot1.leaveFleet(1000);
+        alice.getTS().getC().addAchvGoal(ASSyntax.parseLiteral("late"), null);
+        alice.wakeUpSense();
+        await("alice's send fails with bridge_error", () -> believes(alice, "failed(bridge_error)"));
         assertFalse(robot1.mqttChannel().send(new rason.messaging.WireMessage(ROBOT1, "alice", ROBOT2, "bob", "tell",
                 "late", "mid_late", "")), "refused: the agent's intention fails");
         assertFalse(robot1.mqttChannel().announceNow());
