@@ -254,6 +254,19 @@ class MqttFleetTest {
     }
 
     @Test
+    void aRobotWhoseConnectionIsCutIsNoticedGoneWithinTwoSeconds() throws Exception {
+        robot1Link = new BlackHoleProxy(broker.port());
+        RosAgArch bob = twoRobotsAndAHello();
+        long t0 = System.nanoTime();
+        robot1Link.cut(); // the broker sees the TCP connection close: it sends robot1's will
+        await("robot2 notices alice gone", () -> !robot2.fleet().fleet().reachable().contains("alice"));
+        long took = System.nanoTime() - t0;
+        System.out.printf("departure noticed after %.0f ms (connection cut, last will)%n", took / 1e6);
+        assertTrue(took < DEPARTURE_LIMIT_NANOS, "noticed after " + took / 1e6 + " ms");
+        assertEquals(0, warningsWith("dropped last will"), "the will was taken");
+    }
+
+    @Test
     void aRobotWhoseLinkGoesQuietIsNoticedGoneBySilenceWithinTwoSeconds() throws Exception {
         presenceTimeoutNanos = 1_500_000_000L; // heartbeats every 0.2 s: seven may be lost before it counts
         robot1Link = new BlackHoleProxy(broker.port());

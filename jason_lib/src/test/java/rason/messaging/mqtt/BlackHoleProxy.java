@@ -12,7 +12,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 /**
  * A TCP proxy to a broker on 127.0.0.1 that can go quiet: after {@link #blackHole()} it drops
  * every byte both ways but keeps the connections open, as a link that fails without either end
- * seeing a close.
+ * seeing a close; after {@link #cut()} the connections are closed.
  */
 public final class BlackHoleProxy implements AutoCloseable {
 
@@ -36,6 +36,11 @@ public final class BlackHoleProxy implements AutoCloseable {
     /** From now on nothing passes, either way, on any connection. */
     public void blackHole() {
         dropping = true;
+    }
+
+    /** Closes every connection and takes no new one: both ends see the link end. */
+    public void cut() throws IOException {
+        close();
     }
 
     private void acceptLoop() {
