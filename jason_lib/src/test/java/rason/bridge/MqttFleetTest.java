@@ -66,6 +66,8 @@ class MqttFleetTest {
     /** robot1's way to the broker, if not direct. */
     private BlackHoleProxy robot1Link = null;
     private long presenceTimeoutNanos = DEPARTURE_LIMIT_NANOS;
+    private java.util.function.Function<String, MqttSettings> settingsOf = url -> new MqttSettings(url, "rason/", 60,
+            PERIOD_NANOS, "", "", "");
     private final List<String> warnings = new CopyOnWriteArrayList<>();
     private final Handler capture = new Handler() {
         @Override
@@ -113,7 +115,7 @@ class MqttFleetTest {
             robot.fleet().requireKeyText(KEY, "test");
         robot.fleet().setPresenceTimeoutNanos(presenceTimeoutNanos);
         String url = robot == robot1 && robot1Link != null ? robot1Link.url() : broker.url();
-        robot.useMqtt(new MqttSettings(url, "rason/", 60, PERIOD_NANOS, "", "", ""));
+        robot.useMqtt(settingsOf.apply(url));
     }
 
     private RosAgArch start(RunningAgents agents, String name, String program) throws Exception {
@@ -305,6 +307,39 @@ class MqttFleetTest {
         await("the second hello", () -> believes(bob, "heard(2)"));
         await("and the message after it", () -> believes(bob, "done2"));
         assertFalse(believes(bob, "heard(3)"), "each hello once");
+    }
+
+    @Test
+    void overTlsWithAPasswordTheRobotsTalkAndAWrongPasswordGetsNoConnection() throws Exception {
+        broker.close();
+        Path tls = Files.createDirectories(dir.resolve("tls"));
+        broker = MosquittoBroker.startTls(tls, "robots", "s3cret");
+        Files.writeString(tls.resolve("password"), "s3cret\n");
+        Files.writeString(tls.resolve("wrong"), "guess\n");
+        String ssl = "ssl://127.0.0.1:" + broker.port();
+        settingsOf = url -> new MqttSettings(ssl, "rason/", 60, PERIOD_NANOS, "robots",
+                tls.resolve("password").toString(), tls.resolve("ca.pem").toString());
+        twoRobotsAndAHello();
+        Bridge intruder = new Bridge();
+        intruder.fleet().setMasId("/robot3/rason_mas");
+        intruder.fleet().requireKeyText(KEY, "test");
+        var refused = intruder.useMqtt(new MqttSettings(ssl, "rason/", 60, PERIOD_NANOS, "robots",
+                tls.resolve("wrong").toString(), tls.resolve("ca.pem").toString()));
+        var untrusting = new Bridge();
+        untrusting.fleet().setMasId("/robot4/rason_mas");
+        untrusting.fleet().requireKeyText(KEY, "test");
+        var noCa = untrusting.useMqtt(new MqttSettings(ssl, "rason/", 60, PERIOD_NANOS, "robots",
+                tls.resolve("password").toString(), ""));
+        try {
+            await("the wrong password refused", () -> warningsWith("rason-robot3-rason_mas cannot connect") >= 1);
+            await("the untrusted certificate refused", () -> warningsWith("rason-robot4-rason_mas cannot connect") >= 1);
+            assertFalse(refused.isConnected());
+            assertFalse(noCa.isConnected());
+            assertFalse(robot2.fleet().fleet().reachable().contains("mallory"));
+        } finally {
+            refused.abandon();
+            noCa.abandon();
+        }
     }
 
     @Test

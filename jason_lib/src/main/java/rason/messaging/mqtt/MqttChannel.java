@@ -102,6 +102,8 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
     static final long RECONNECT_INITIAL_MS = 50, RECONNECT_MAX_MS = 1000;
     /** Senders whose last sequence is kept when the channel drops duplicates itself (authentication off). */
     static final int MAX_SENDERS = 1024;
+    /** Kind of the rate-limited lines of a connection that failed or was lost. */
+    public static final String LINK = "mqtt link";
     /** Kind of the rate-limited lines of what arrives and cannot be read. */
     public static final String UNREADABLE = "unreadable mqtt payload";
 
@@ -156,9 +158,13 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
                 .initialDelay(RECONNECT_INITIAL_MS, TimeUnit.MILLISECONDS)
                 .maxDelay(RECONNECT_MAX_MS, TimeUnit.MILLISECONDS).applyAutomaticReconnect()
                 .addConnectedListener(c -> connected())
-                // a reconnect is a new connection: a new link and will, and our session resumed
-                .addDisconnectedListener(c -> ((Mqtt5ClientReconnector) c.getReconnector())
-                        .connect(connectMessage(false)));
+                .addDisconnectedListener(c -> {
+                    if (c.getSource() != com.hivemq.client.mqtt.lifecycle.MqttDisconnectSource.USER)
+                        limited.warn(LINK, "mqtt: " + clientId(masId) + " cannot connect to " + settings.url()
+                                + " (" + c.getCause().getMessage() + "); retrying", wall.nanos());
+                    // a reconnect is a new connection: a new link and will, and our session resumed
+                    ((Mqtt5ClientReconnector) c.getReconnector()).connect(connectMessage(false));
+                });
         if (settings.tls())
             b = b.sslConfig().trustManagerFactory(trust(settings.caFile())).applySslConfig();
         if (!settings.username().isEmpty())
@@ -187,11 +193,7 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
         sender.start();
         nextHeartbeat = wall.nanos();
         ticker.scheduleAtFixedRate(this::tick, 0, TICK_NANOS, TimeUnit.NANOSECONDS);
-        client.connect(connectMessage(true)).whenComplete((ack, e) -> {
-            if (e != null)
-                logger.warning("mqtt: cannot connect to " + settings.url() + " yet (" + e.getMessage()
-                        + "); retrying");
-        });
+        client.connect(connectMessage(true)).exceptionally(e -> null); // failures: the disconnected listener
     }
 
     /**

@@ -51,10 +51,43 @@ public final class MosquittoBroker implements AutoCloseable {
 
     /** The same, on the given port (a broker that comes back where it was). */
     public static MosquittoBroker start(Path dir, int port) throws IOException, InterruptedException {
+        return start(dir, port, "allow_anonymous true\n");
+    }
+
+    /**
+     * A broker with TLS (a certificate for 127.0.0.1 that is its own authority, written to
+     * dir/ca.pem) that takes user with password only.
+     */
+    public static MosquittoBroker startTls(Path dir, String user, String password)
+            throws IOException, InterruptedException {
+        run(dir, "openssl", "req", "-x509", "-newkey", "rsa:2048", "-nodes", "-keyout", "key.pem", "-out", "ca.pem",
+                "-days", "1", "-subj", "/CN=127.0.0.1", "-addext", "subjectAltName=IP:127.0.0.1");
+        run(dir, "mosquitto_passwd", "-c", "-b", "passwords", user, password);
+        return start(dir, freePort(), "allow_anonymous false\npassword_file " + dir.resolve("passwords")
+                + "\ncertfile " + dir.resolve("ca.pem") + "\nkeyfile " + dir.resolve("key.pem") + "\n");
+    }
+
+    private static void run(Path dir, String... command) throws IOException, InterruptedException {
+        Process p;
+        try {
+            p = new ProcessBuilder(command).directory(dir.toFile()).redirectErrorStream(true)
+                    .redirectOutput(dir.resolve(command[0] + ".log").toFile()).start();
+        } catch (IOException e) {
+            assumeTrue(false, command[0] + " is not installed: test skipped");
+            throw e;
+        }
+        if (!p.waitFor(60, TimeUnit.SECONDS) || p.exitValue() != 0)
+            throw new IllegalStateException(String.join(" ", command) + " failed: "
+                    + Files.readString(dir.resolve(command[0] + ".log")));
+    }
+
+    private static MosquittoBroker start(Path dir, int port, String access) throws IOException, InterruptedException {
         Path bin = binary();
         assumeTrue(bin != null, "mosquitto is not installed (apt-get install -y mosquitto): MQTT tests skipped");
         Path conf = dir.resolve("mosquitto.conf");
-        Files.writeString(conf, "listener " + port + " 127.0.0.1\nallow_anonymous true\npersistence false\nset_tcp_nodelay true\n"
+        Files.writeString(conf, "listener " + port + " 127.0.0.1\n" + access + "persistence false\nset_tcp_nodelay true\n"
+                // as this user: one started by root would become user mosquitto, who cannot read the test's files
+                + "user " + System.getProperty("user.name") + "\n"
                 + "log_dest stderr\nlog_type error\nlog_type warning\nlog_type notice\n");
         Process p = new ProcessBuilder(bin.toString(), "-c", conf.toString())
                 .redirectErrorStream(true).redirectOutput(dir.resolve("mosquitto.log").toFile()).start();
