@@ -110,3 +110,35 @@ def test_javas_refusals_name_the_parameter():
         java_config.push(RefusingBridge(), settings(perception_manager='fancier'), '/r1/rason_mas', 1)
     with pytest.raises(java_config.FleetKeyError, match='/nonexistent/fleet.key does not exist'):
         java_config.push_auth(RefusingBridge(), settings(fleet_key_file='/nonexistent/fleet.key'))
+
+
+class ChannelBridge(object):
+    """Records the MQTT settings ``useMqtt`` is given."""
+
+    def __init__(self):
+        self.mqtt = []
+
+    def useMqtt(self, mqtt_settings):
+        self.mqtt.append(mqtt_settings)
+        return 'channel'
+
+
+def test_the_ros_channel_needs_nothing_and_mqtt_settings_reach_java_in_its_units():
+    bridge = ChannelBridge()
+    assert java_config.use_channel(bridge, settings()) is None
+    assert bridge.mqtt == []
+    assert java_config.use_channel(bridge, settings(
+        fleet_channel='mqtt', mqtt_url='ssl://broker.lab:8883', mqtt_prefix='lab1', message_ttl=30,
+        presence_period=0.25, mqtt_username='robot1', mqtt_password_file='/etc/rason/pw',
+        mqtt_ca_file='/etc/rason/ca.pem')) == 'channel'
+    (mqtt,) = bridge.mqtt
+    assert (str(mqtt.url()), str(mqtt.prefix()), mqtt.messageTtlSeconds(), mqtt.presencePeriodNanos()) == \
+        ('ssl://broker.lab:8883', 'lab1/', 30, 250000000)
+    assert (str(mqtt.username()), str(mqtt.passwordFile()), str(mqtt.caFile())) == \
+        ('robot1', '/etc/rason/pw', '/etc/rason/ca.pem')
+    assert (str(mqtt.host()), mqtt.port(), mqtt.tls()) == ('broker.lab', 8883, True)
+
+
+def test_mqtt_settings_java_refuses_name_the_parameter():
+    with pytest.raises(ParamError, match="fleet_channel mqtt: mqtt_url 'tcp://\\[bad' is not a URL"):
+        java_config.use_channel(ChannelBridge(), settings(fleet_channel='mqtt', mqtt_url='tcp://[bad'))

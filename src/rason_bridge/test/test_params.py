@@ -97,6 +97,11 @@ def test_whole_numbers_of_seconds_become_floats():
     ('fleet_auth', 'yes', "fleet_auth must be 'required' or 'off', not 'yes'"),
     ('fleet_key_file', 7, 'fleet_key_file must be a path, not 7'),
     ('trust', 'all', "trust must map agent names (or '*') to rules, not 'all'"),
+    ('fleet_channel', 'zmq', "fleet_channel must be `ros` or `mqtt`, not 'zmq'"),
+    ('mqtt_url', 'localhost:1883', "mqtt_url must be `tcp://HOST:PORT` or `ssl://HOST:PORT` (TLS), not 'localhost:1883'"),
+    ('mqtt_prefix', 'rason/+/', "mqtt_prefix must be a topic prefix without `+` or `#`, not 'rason/+/'"),
+    ('message_ttl', 0.5, 'message_ttl must be a whole number of seconds, 1 or more, not 0.5'),
+    ('message_ttl', 1.5, 'message_ttl must be a whole number of seconds, 1 or more, not 1.5'),
 ])
 def test_a_bad_value_is_one_line_naming_parameter_value_and_what_is_allowed(name, value, text):
     with pytest.raises(ParamError) as e:

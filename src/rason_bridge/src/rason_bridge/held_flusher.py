@@ -13,7 +13,8 @@ RETRY_PAUSE = 0.01
 class HeldFlusher(object):
     """
     :param actions: the :class:`rason_bridge.action_sender.ActionSender`
-    :param messages: the :class:`rason_bridge.message_sender.MessageSender`
+    :param messages: the :class:`rason_bridge.message_sender.MessageSender` (None when another
+        channel than ROS topics carries the agents' messages)
     :param unlinked: ``unlinked(message)`` for a message published after waiting in vain for its link
     :param alive: ``alive()`` -> False once the process shuts down
     """
@@ -40,13 +41,15 @@ class HeldFlusher(object):
     def step(self, woken):
         """One round: flush until nothing is held (or the process ends), or refresh the count."""
         self._wakeup.clear()
-        if woken or self._actions.has_held() or self._messages.held_count():
+        if woken or self._actions.has_held() or (self._messages and self._messages.held_count()):
             while (self._actions.flush() + self._flush_messages()) and self._alive():
                 self._pause(RETRY_PAUSE)
         else:
             self._actions.refresh_listed()
 
     def _flush_messages(self):
+        if self._messages is None:
+            return 0
         held, unlinked = self._messages.flush()
         for message in unlinked:
             self._unlinked(message)

@@ -24,9 +24,12 @@ class Inbound(object):
         self._now_ns = now_ns
         self.events = None  # the jason/event subscriber, once subscribed
 
-    def subscribe(self, messages_topic, presence_topic):
+    def subscribe(self):
         self.events = rospy.Subscriber('jason/event', Event, self._on_event, queue_size=None, tcp_nodelay=True)
         rospy.Subscriber('jason/perception', Perception, self._on_perception, queue_size=100, tcp_nodelay=True)
+
+    def subscribe_fleet(self, messages_topic, presence_topic):
+        """The fleet over ROS topics (not with ``fleet_channel: mqtt``, whose channel is Java's)."""
         rospy.Subscriber(messages_topic, AgentMessage, self._on_message, queue_size=None, tcp_nodelay=True)
         rospy.Subscriber(presence_topic, Presence, self._on_presence, queue_size=100, tcp_nodelay=True)
 

@@ -4,7 +4,7 @@ No rospy; the JVM must be running (:func:`rason_bridge.jvm.start_jvm`)."""
 import jpype
 
 from rason_bridge.fleet_auth import OFF
-from rason_bridge.params import ParamError, seconds_to_nanos
+from rason_bridge.params import MQTT, ParamError, seconds_to_nanos
 
 #: ~param -> the InputLimits setter it sets.
 INPUT_LIMIT_SETTERS = {
@@ -91,6 +91,24 @@ def push_auth(java_bridge, settings):
             java_bridge.fleet().requireKeyFile(settings.fleet_key_file)
     except jpype.JException as e:
         raise FleetKeyError(str(e.getMessage()))
+
+
+def use_channel(java_bridge, settings):
+    """With ``fleet_channel: mqtt``, the fleet goes through the broker from Java (after :func:`push`
+    and :func:`push_auth`, before the agents start); with ``ros``, nothing changes.
+
+    :raises ParamError: MQTT settings Java refuses, saying which and why
+    """
+    if settings.fleet_channel != MQTT:
+        return None
+    mqtt_settings = jpype.JClass('rason.messaging.mqtt.MqttSettings')
+    try:
+        return java_bridge.useMqtt(mqtt_settings(
+            settings.mqtt_url, settings.mqtt_prefix, int(settings.message_ttl),
+            seconds_to_nanos('presence_period', settings.presence_period), settings.mqtt_username,
+            settings.mqtt_password_file, settings.mqtt_ca_file))
+    except jpype.JException as e:
+        raise ParamError('fleet_channel mqtt: %s' % e.getMessage())
 
 
 def load_mas(java_bridge, settings, mas2j_path):

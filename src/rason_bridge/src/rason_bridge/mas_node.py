@@ -18,9 +18,9 @@ import jpype
 import rospkg
 import rospy
 from rospy.impl.rosout import RosOutHandler
-from rason_msgs.msg import Action, AgentMessage, Event, MindState, Presence
+from rason_msgs.msg import Action, Event, MindState
 
-from rason_bridge import java_config, ros_links, signed
+from rason_bridge import java_config, ros_links
 from rason_bridge.action_sender import DEFERRED, NO_DECOMPOSER, ActionSender
 from rason_bridge.coalesce import PerceptionCoalescer
 from rason_bridge.exits import exit_for_shutdown
@@ -29,12 +29,12 @@ from rason_bridge.held_flusher import HeldFlusher
 from rason_bridge.inbound import Inbound
 from rason_bridge.jvm import JvmError, start_jvm
 from rason_bridge.log_pump import LogPump
-from rason_bridge.message_sender import HELD, MessageSender
 from rason_bridge.mind_publisher import MindPublisher
 from rason_bridge.outbound_pump import OutboundItems, OutboundPump
-from rason_bridge.params import ParamError, read_settings
+from rason_bridge.params import MQTT, ParamError, read_settings
 from rason_bridge.perception_pump import PerceptionPump
 from rason_bridge.presence_loop import PresenceLoop
+from rason_bridge.ros_fleet import RosFleet
 from rason_bridge.start_barrier import StartBarrier, hold
 
 _WRITE = {'error': rospy.logerr, 'warn': rospy.logwarn, 'info': rospy.loginfo, 'debug': rospy.logdebug}
@@ -75,13 +75,11 @@ class RasonMasNode(object):
             publish=self._action_pub.publish, connected=self._action_pub.get_num_connections,
             listed=lambda: self._graph.listed_subscribers(self._action_topic, self._action_pub),
             fail=self._action_not_sent, connect_wait=s.connect_wait)
-        self._message_pub = rospy.Publisher(s.messages_topic, AgentMessage, queue_size=1000, tcp_nodelay=True)
-        self._presence_pub = rospy.Publisher(s.presence_topic, Presence, queue_size=10, tcp_nodelay=True)
-        # signed when published, in publishing order, so the sequence numbers arrive increasing
-        self._messages = MessageSender(publish=self._sign_and_publish,
-                                       linked=lambda mas: ros_links.linked(self._message_pub, mas),
-                                       connect_wait=s.connect_wait)
-        self._held = HeldFlusher(self._actions, self._messages, self._warn_unlinked, alive=_alive)
+        # with fleet_channel mqtt, Java's MQTT channel carries messages and presence: no fleet topics here
+        self._fleet = None if s.fleet_channel == MQTT else RosFleet(
+            self._channel, self._bridge.agentNames, s, self.mas_id, lambda: self._held.wake())
+        self._held = HeldFlusher(self._actions, self._fleet and self._fleet.messages,
+                                 self._fleet and self._fleet.warn_unlinked, alive=_alive)
         self._presence = PresenceLoop(self._publish_presence, self._presence_tick, s.presence_period,
                                       error=lambda *a: rospy.logerr_throttle(10, *a), alive=_alive)
         items = OutboundItems(jpype.JClass)
@@ -117,20 +115,25 @@ class RasonMasNode(object):
         return names
 
     def configure_auth(self):
-        """Sign and check with the fleet key, or not at all (after :meth:`load`, before :meth:`start`).
+        """Sign and check with the fleet key, or not at all, and take the fleet channel (after
+        :meth:`load`, before :meth:`start`).
 
         :raises java_config.FleetKeyError: authentication is required and the key cannot be loaded
+        :raises ParamError: MQTT settings Java refuses
         """
         if self.settings.fleet_auth != OFF and self.settings.fleet_key is not None:
             rospy.logwarn('the fleet key comes from ~fleet_key: anyone who reaches the ROS master can read the '
                           'parameter server, and with it command these agents; prefer ~fleet_key_file')
         java_config.push_auth(self._bridge, self.settings)
+        java_config.use_channel(self._bridge, self.settings)
 
     def start(self):
         """Subscribe to the jason/* topics and start the agents' reasoning."""
         self._actions.refresh_listed()
         self._perceptions.start()
-        self._inbound.subscribe(self.settings.messages_topic, self.settings.presence_topic)
+        if self._fleet:
+            self._inbound.subscribe_fleet(self.settings.messages_topic, self.settings.presence_topic)
+        self._inbound.subscribe()
         # feedback from a decomposer not connected yet would be lost: let the running ones connect first
         self._graph.wait_for_publishers(self._inbound.events, self.settings.connect_wait)
         for part in (self._outbound, self._held, self._presence) + ((self._mind,) if self._mind else ()):
@@ -159,6 +162,8 @@ class RasonMasNode(object):
         self._stopping = True
         self._start_released.set()
         self._presence.leave()  # first, so the other processes stop counting on our agents at once
+        if not self._fleet:
+            self._bridge.leaveFleet(1000)
         if self._mind is not None:
             self._mind.stop()
         self._perceptions.stop()
@@ -185,16 +190,13 @@ class RasonMasNode(object):
     # ---- presence -------------------------------------------------------------------
 
     def _presence_tick(self):
-        self._channel.presenceTick(ros_links.linked_processes(self._message_pub))
+        if self._fleet:  # the MQTT channel checks silences itself
+            self._fleet.presence_tick()
         self._bridge.actions().decomposersTick(ros_links.event_publishers(self._inbound.events))
 
     def _publish_presence(self, leaving):
-        # called under the presence loop's lock: signed in publishing order
-        try:
-            self._presence_pub.publish(signed.presence(self._channel, self._bridge.agentNames(), self.mas_id, self.settings.presence_period,
-                                                       leaving))
-        except Exception as e:  # topic closed at shutdown
-            rospy.logdebug('presence not announced: %s', e)
+        if self._fleet:  # the MQTT channel announces itself
+            self._fleet.publish_presence(leaving)
 
     # ---- agents -> ROS: the receiver of OutboundItems ---------------------------------
 
@@ -214,14 +216,9 @@ class RasonMasNode(object):
         if self._actions.submit(msg) == DEFERRED:
             self._held.wake()
 
-    def publish_message(self, sender, receiver_mas, receiver, performative, content, msg_id, in_reply_to):
-        msg = AgentMessage(sender_mas=self.mas_id, sender=sender, receiver_mas=receiver_mas, receiver=receiver,
-                           performative=performative, content=content, msg_id=msg_id, in_reply_to=in_reply_to)
-        try:
-            if self._messages.submit(msg, receiver_mas) == HELD:
-                self._held.wake()
-        except Exception as e:  # topic closed at shutdown
-            rospy.logwarn('[%s] could not send %s to %s: %s', sender, performative, receiver or 'everyone', e)
+    def publish_message(self, *fields):
+        if self._fleet:  # over MQTT, Java's channel takes the agents' messages itself
+            self._fleet.publish_message(*fields)
 
     def announce(self):
         self._presence.announce()  # our agents or their registrations changed: others hear of it now
@@ -235,14 +232,6 @@ class RasonMasNode(object):
         if action.action != Action.CANCEL:  # a cancel nobody can hear has nothing left to stop
             self._bridge.actions().fail(action.agent, action.action_id, reason)
 
-    def _sign_and_publish(self, msg):
-        # the message sender calls it in publishing order
-        self._message_pub.publish(signed.sign_message(self._channel, msg))
-
-    def _warn_unlinked(self, m):
-        rospy.logwarn('[%s] %s to %s published although %s is still not connected after %.1f s: '
-                      'it is probably lost', m.sender, m.performative, m.receiver, m.receiver_mas,
-                      self.settings.connect_wait)
 
 
 def main(argv=None):
@@ -273,6 +262,10 @@ def main(argv=None):
         return 1
     try:
         node.configure_auth()  # after load: Java's log lines reach rosout from then on
+    except ParamError as e:
+        node.close_log()
+        rospy.logfatal('bad parameter: %s', e)
+        return 1
     except java_config.FleetKeyError as e:
         node.close_log()
         rospy.logfatal('fleet authentication is required (~fleet_auth) but there is no usable fleet key: %s. %s',

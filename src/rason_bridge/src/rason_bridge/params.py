@@ -113,6 +113,39 @@ def _names(param, value):
     return list(value)
 
 
+#: ``fleet_channel`` values: the ROS topics of one master, or an MQTT broker.
+ROS, MQTT = 'ros', 'mqtt'
+
+
+def _choice(*allowed):
+    def check(param, value):
+        if value not in allowed:
+            param.refuse(value)
+        return value
+    return check
+
+
+def _optional_path(param, value):
+    if value is None or value == '':
+        return ''
+    if not isinstance(value, str):
+        param.refuse(value)
+    return os.path.expanduser(value)
+
+
+def _mqtt_url(param, value):
+    if not isinstance(value, str) or not (value.startswith('tcp://') or value.startswith('ssl://')) \
+            or len(value) <= len('tcp://'):
+        param.refuse(value)
+    return value
+
+
+def _mqtt_prefix(param, value):
+    if not isinstance(value, str) or '+' in value or '#' in value or '\0' in value:
+        param.refuse(value)
+    return value
+
+
 def _trust(param, value):
     try:
         return trust_rules(value)
@@ -183,6 +216,23 @@ PARAMS = (
           _fleet_key, shown_default='none'),
     Param('auth_window', 'float', 60.0, 's', 'a number of seconds, 0 or more (0: no clock checks)',
           'how far a stamp may be from this robot\'s clock', _seconds(0)),
+    Param('fleet_channel', 'str', ROS, '', '`ros` or `mqtt`',
+          'how this process reaches the others: `ros`: the messages and presence topics of this master; '
+          '`mqtt`: an MQTT 5 broker (`mqtt_*`), from Java (see docs/fleet-channel.md)', _choice(ROS, MQTT)),
+    Param('mqtt_url', 'str', 'tcp://127.0.0.1:1883', '', '`tcp://HOST:PORT` or `ssl://HOST:PORT` (TLS)',
+          'the broker, with `fleet_channel: mqtt`', _mqtt_url),
+    Param('mqtt_prefix', 'str', 'rason/', '', 'a topic prefix without `+` or `#`',
+          'what every fleet topic on the broker starts with (a fleet per prefix)', _mqtt_prefix),
+    Param('message_ttl', 'float', 60.0, 's (wall clock)', 'a whole number of seconds, 1 or more',
+          'how long the broker keeps a message (and our session) for a process that is away; MQTT only',
+          _seconds(1)),
+    Param('mqtt_username', 'str', '', '', 'a string', 'the broker user; empty: none', _text, shown_default="''"),
+    Param('mqtt_password_file', 'str', '', '', 'a path',
+          'a file whose first line is the broker user\'s password; empty: none', _optional_path,
+          shown_default="''"),
+    Param('mqtt_ca_file', 'str', '', '', 'a path',
+          'PEM certificates that sign the broker\'s TLS certificate (`ssl://`); empty: the JVM\'s trust store',
+          _optional_path, shown_default="''"),
     Param('mind_period', 'float', 0.5, 's (wall clock)', '0 (off) or more seconds',
           'time between two readings of a running agent\'s state for `jason/mind`; 0: no `jason/mind`',
           _seconds(0)),
@@ -213,6 +263,8 @@ def read_settings(get_param, ros_home):
                          % (values['presence_timeout'], values['presence_period']))
     if values['fleet_key'] and values['fleet_key_file']:
         raise ParamError('set fleet_key or fleet_key_file, not both')
+    if values['message_ttl'] != int(values['message_ttl']):
+        raise ParamError('message_ttl must be a whole number of seconds, 1 or more, not %r' % values['message_ttl'])
     if values['fleet_key_file'] is None:
         values['fleet_key_file'] = default_key_file(ros_home)
     return Settings(**values)

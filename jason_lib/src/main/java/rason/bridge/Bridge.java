@@ -15,6 +15,8 @@ import rason.infra.LoopbackMindInspector;
 import rason.infra.MasHost;
 import rason.infra.RasonLocalMAS;
 import rason.messaging.FleetPort;
+import rason.messaging.mqtt.MqttChannel;
+import rason.messaging.mqtt.MqttSettings;
 import rason.mind.MindPort;
 import rason.perception.AgentPerception;
 import rason.perception.PerceptionPort;
@@ -44,6 +46,7 @@ public final class Bridge implements MasHost {
     private final RosTopicChannel rosChannel = new RosTopicChannel(outbox);
     private final FleetPort fleet;
     private final MindPort mind;
+    private volatile MqttChannel mqtt; // the fleet channel instead of rosChannel, if chosen
     private volatile RasonLocalMAS mas;
 
     /**
@@ -78,6 +81,28 @@ public final class Bridge implements MasHost {
     @Override
     public FleetPort fleet() {
         return fleet;
+    }
+
+    /**
+     * The fleet goes through an MQTT broker instead of the ROS topics (the node then neither
+     * publishes nor subscribes /rason/messages and /rason/presence): call after the fleet's mas id,
+     * incarnation and authentication are set, before the agents start. Connects in the background.
+     *
+     * @throws IllegalArgumentException settings that cannot be used (the text says why)
+     */
+    public MqttChannel useMqtt(MqttSettings settings) {
+        if (mqtt != null)
+            throw new IllegalStateException("the MQTT fleet channel is already in use");
+        MqttChannel channel = new MqttChannel(fleet, settings, logger, wall);
+        mqtt = channel;
+        fleet.useChannel(channel);
+        channel.start();
+        return channel;
+    }
+
+    /** The MQTT fleet channel if in use, else null. */
+    public MqttChannel mqttChannel() {
+        return mqtt;
     }
 
     /** The fleet channel of one ROS master: what the node publishes and receives on /rason/*. */
@@ -166,6 +191,16 @@ public final class Bridge implements MasHost {
     public void shutdown(String reason) {
         actions.shutdown(reason);
         fleet.shutdown(reason);
+    }
+
+    /**
+     * Our agents leave the fleet: with the MQTT channel, a leaving presence goes out and the
+     * connection closes (waiting at most timeoutMillis). The ROS channel's node announces its own.
+     */
+    public void leaveFleet(long timeoutMillis) {
+        MqttChannel m = mqtt;
+        if (m != null)
+            m.leave(timeoutMillis);
     }
 
     /**

@@ -147,6 +147,15 @@ public final class Fleet {
      */
     public void presenceAnnounced(String mas, String[] names, String[] dfAgents, String[] dfServices, boolean leaving,
             float period, FleetAuth.Signed signed, String publisher) {
+        presenceAnnounced(mas, names, dfAgents, dfServices, leaving, period, signed, publisher, "");
+    }
+
+    /**
+     * The same, announced over the channel connection named link ("" if the channel has none):
+     * the last will of that connection, and only of that one, counts as mas leaving ({@link #willArrived}).
+     */
+    public void presenceAnnounced(String mas, String[] names, String[] dfAgents, String[] dfServices, boolean leaving,
+            float period, FleetAuth.Signed signed, String publisher, String link) {
         if (mas == null || mas.isEmpty()) {
             warned.warn("presence:", "ignored a presence announcement without mas_id");
             return;
@@ -154,7 +163,7 @@ public final class Fleet {
         if (mas.equals(masId))
             return;
         FleetAuth.Refusal refused = auth.verifyPresence(mas, Arrays.asList(names), Arrays.asList(dfAgents),
-                Arrays.asList(dfServices), period, leaving, signed);
+                Arrays.asList(dfServices), period, leaving, link, signed);
         if (refused == null)
             refused = auth.admit(FleetAuth.Kind.PRESENCE, mas, signed, wall.nanos(),
                     () -> publishedBy(mas, publisher));
@@ -175,12 +184,73 @@ public final class Fleet {
         PresenceTable.Changes c;
         synchronized (presence) {
             c = presence.announced(mas, signed.incarnation(), valid, leaving, wall.nanos());
+            if (leaving)
+                links.remove(mas);
+            else if (!c.stale)
+                links.put(mas, new Link(signed.incarnation(), link == null ? "" : link));
         }
         apply(c);
         if (!leaving && !c.stale)
             directory.remote(mas, FleetDirectory.valid(valid, dfAgents, dfServices, (entry, why) -> limited.warn(
                     IGNORED_REGISTRATION, "ignored directory registration '" + InputLimits.abbreviate(entry, 200)
                             + "' announced by " + InputLimits.abbreviate(mas, 100) + ": " + why, wall.nanos())));
+    }
+
+    /** The channel connection a process last announced itself over. */
+    private record Link(long incarnation, String id) {
+    }
+
+    private final java.util.Map<String, Link> links = new java.util.HashMap<>(); // guarded by presence
+
+    /**
+     * The last will of process mas's channel connection named link arrived: mas leaves if that is
+     * the connection of its current run it last announced itself over. A will of any other
+     * connection (an earlier one, a copy played again after mas reconnected) changes nothing.
+     *
+     * @param signed its authentication fields (see {@link FleetAuth#signWill})
+     * @param publisher who published it, as the channel knows it ("" if unknown)
+     */
+    public void willArrived(String mas, String link, FleetAuth.Signed signed, String publisher) {
+        if (mas == null || mas.isEmpty() || mas.equals(masId))
+            return;
+        FleetAuth.Refusal refused = auth.verifyWill(mas, link, signed);
+        if (refused == null)
+            refused = publishedBy(mas, publisher);
+        PresenceTable.Changes c = null;
+        synchronized (presence) {
+            Link current = links.get(mas);
+            if (refused == null && current == null)
+                return; // gone already (it left, or a retained will of an earlier run): nothing to say
+            if (refused == null && (link.isEmpty() || !current.id().equals(link)
+                    || current.incarnation() != signed.incarnation()))
+                refused = new FleetAuth.Refusal(FleetAuth.Problem.REPLAYED, "the will of connection "
+                        + InputLimits.abbreviate(link, 40) + ", which is not the one " + InputLimits.abbreviate(mas, 100)
+                        + " last announced itself over");
+            if (refused == null) {
+                links.remove(mas);
+                c = presence.announced(mas, signed.incarnation(), List.of(), true, wall.nanos());
+            }
+        }
+        if (refused != null) {
+            limited.warn(DROPPED_PRESENCE + " (" + refused.problem().word + ")", "dropped last will of "
+                    + InputLimits.abbreviate(mas, 100) + ": " + refused.text(), wall.nanos());
+            return;
+        }
+        logger.info("presence: the connection of " + mas + " ended without leaving (its last will)");
+        apply(c);
+    }
+
+    /**
+     * Periodic presence check of a channel without links of its own (a broker): every known process
+     * counts as linked, and only silence (or its will) makes it leave.
+     */
+    public void presenceTickAllLinked() {
+        PresenceTable.Changes c;
+        synchronized (presence) {
+            c = presence.tick(presence.peerIds(), wall.nanos(), presenceTimeoutNanos);
+            links.keySet().retainAll(presence.peerIds());
+        }
+        apply(c);
     }
 
     /** Kind of the rate-limited lines of directory registrations in a presence that are ignored. */

@@ -44,7 +44,9 @@ public final class FleetAuth {
 
     /** The two kinds of signed traffic; the tag starts the canonical encoding. */
     public enum Kind {
-        MESSAGE("rason_msgs/AgentMessage"), PRESENCE("rason_msgs/Presence");
+        MESSAGE("rason_msgs/AgentMessage"), PRESENCE("rason_msgs/Presence"),
+        /** A channel's last will: "the connection named link of this process ended" (see {@link #signWill}). */
+        WILL("rason/will");
 
         final String tag;
 
@@ -185,8 +187,28 @@ public final class FleetAuth {
     /** Our next presence announcement with directory registrations (dfAgents[i] provides dfServices[i]). */
     public Signed signPresence(String masId, List<String> agents, List<String> dfAgents, List<String> dfServices,
             float period, boolean leaving) {
+        return signPresence(masId, agents, dfAgents, dfServices, period, leaving, "");
+    }
+
+    /**
+     * The same, announced over the connection named link (a channel's connection id, "" for none):
+     * the MAC covers the link too, so a will naming that link can be matched to it ({@link #signWill}).
+     */
+    public Signed signPresence(String masId, List<String> agents, List<String> dfAgents, List<String> dfServices,
+            float period, boolean leaving, String link) {
         return sign(presenceSequence.incrementAndGet(),
-                s -> canonicalPresence(masId, agents, dfAgents, dfServices, period, leaving, s));
+                s -> canonicalPresence(masId, agents, dfAgents, dfServices, period, leaving, link, s));
+    }
+
+    /**
+     * A last will of our connection named link: signed when the connection is made and sent by
+     * the broker whenever it ends, so it carries no sequence (0) and its stamp is the time of
+     * signing. A receiver checks only its MAC here ({@link #verifyWill}); that the link is the
+     * sender's current one is the receiver's check, which makes a copy worthless once the
+     * connection it names is over.
+     */
+    public Signed signWill(String masId, String link) {
+        return sign(0, s -> canonicalWill(masId, link, s));
     }
 
     private Signed sign(long sequence, Function<Signed, byte[]> canonical) {
@@ -221,8 +243,27 @@ public final class FleetAuth {
             float period, boolean leaving, Signed s) {
         if (!required)
             return null;
-        Refusal r = macProblem(s, () -> canonicalPresence(masId, agents, dfAgents, dfServices, period, leaving, s));
+        return verifyPresence(masId, agents, dfAgents, dfServices, period, leaving, "", s);
+    }
+
+    /** The same, for a presence announced over the connection named link. */
+    public Refusal verifyPresence(String masId, List<String> agents, List<String> dfAgents, List<String> dfServices,
+            float period, boolean leaving, String link, Signed s) {
+        if (!required)
+            return null;
+        Refusal r = macProblem(s,
+                () -> canonicalPresence(masId, agents, dfAgents, dfServices, period, leaving, link, s));
         return r != null ? r : clockProblem(s);
+    }
+
+    /**
+     * The MAC check of a last will (see {@link #signWill}); no clock check, since a will is
+     * sent long after it was signed, and no replay check, which is the caller's (the link).
+     */
+    public Refusal verifyWill(String masId, String link, Signed s) {
+        if (!required)
+            return null;
+        return macProblem(s, () -> canonicalWill(masId, link, s));
     }
 
     /**
@@ -328,11 +369,24 @@ public final class FleetAuth {
     /** The bytes the MAC of a presence covers (s's MAC itself excluded). */
     public static byte[] canonicalPresence(String masId, List<String> agents, List<String> dfAgents,
             List<String> dfServices, float period, boolean leaving, Signed s) {
+        return canonicalPresence(masId, agents, dfAgents, dfServices, period, leaving, "", s);
+    }
+
+    /** The same, with the connection it is announced over (appended only when there is one). */
+    public static byte[] canonicalPresence(String masId, List<String> agents, List<String> dfAgents,
+            List<String> dfServices, float period, boolean leaving, String link, Signed s) {
         Canonical c = header(Kind.PRESENCE, masId, s);
         c.strings(agents);
         c.int32(Float.floatToIntBits(period)).int8(leaving ? 1 : 0);
         c.strings(dfAgents).strings(dfServices);
+        if (link != null && !link.isEmpty())
+            c.string(link);
         return c.bytes();
+    }
+
+    /** The bytes the MAC of a last will covers. */
+    public static byte[] canonicalWill(String masId, String link, Signed s) {
+        return header(Kind.WILL, masId, s).string(link).bytes();
     }
 
     private static Canonical header(Kind kind, String mas, Signed s) {

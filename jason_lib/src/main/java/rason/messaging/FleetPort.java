@@ -41,7 +41,7 @@ public final class FleetPort implements Fleet.Listener {
     private final RateLimitedLog limited;
     private final Clock wall;
     private final Clock rosClock;
-    private final FleetChannel channel;
+    private volatile FleetChannel channel;
     private final Fleet fleet;
     private final TrustPolicy trust = new TrustPolicy();
     private final Map<String, AgentMessaging> agents = new ConcurrentHashMap<>();
@@ -78,6 +78,11 @@ public final class FleetPort implements Fleet.Listener {
 
     public Fleet fleet() {
         return fleet;
+    }
+
+    /** Messages and presence go through channel from now on (set before the agents start). */
+    public void useChannel(FleetChannel channel) {
+        this.channel = channel;
     }
 
     public FleetAuth auth() {
@@ -236,6 +241,24 @@ public final class FleetPort implements Fleet.Listener {
                 new FleetAuth.Signed(incarnation, sequence, stamp, keyId, mac), publisher);
     }
 
+    /** The same, announced over the channel connection named link (see {@link Fleet#willArrived}). */
+    public void presenceAnnounced(String mas, long incarnation, String[] names, String[] dfAgents, String[] dfServices,
+            float period, boolean leaving, long sequence, long stamp, String keyId, byte[] mac, String publisher,
+            String link) {
+        fleet.presenceAnnounced(mas, names, dfAgents, dfServices, leaving, period,
+                new FleetAuth.Signed(incarnation, sequence, stamp, keyId, mac), publisher, link);
+    }
+
+    /** The last will of process mas's channel connection named link (see {@link Fleet#willArrived}). */
+    public void willArrived(String mas, String link, FleetAuth.Signed signed, String publisher) {
+        fleet.willArrived(mas, link, signed, publisher);
+    }
+
+    /** Periodic presence check of a channel that reaches every process it hears (see {@link Fleet#presenceTickAllLinked}). */
+    public void presenceTickAllLinked() {
+        fleet.presenceTickAllLinked();
+    }
+
     /** Periodic presence check with the processes the channel is linked to. */
     public void presenceTick(String[] linkedMas) {
         fleet.presenceTick(linkedMas);
@@ -299,6 +322,18 @@ public final class FleetPort implements Fleet.Listener {
             boolean leaving) {
         return fleet.auth().signPresence(fleet.getMasId(), List.of(agents), List.of(dfAgents), List.of(dfServices),
                 period, leaving);
+    }
+
+    /** The same, announced over our channel connection named link. */
+    public FleetAuth.Signed signPresence(String[] agents, String[] dfAgents, String[] dfServices, float period,
+            boolean leaving, String link) {
+        return fleet.auth().signPresence(fleet.getMasId(), List.of(agents), List.of(dfAgents), List.of(dfServices),
+                period, leaving, link);
+    }
+
+    /** The last will of our channel connection named link (see {@link FleetAuth#signWill}). */
+    public FleetAuth.Signed signWill(String link) {
+        return fleet.auth().signWill(fleet.getMasId(), link);
     }
 
     /**

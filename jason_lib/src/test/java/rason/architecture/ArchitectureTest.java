@@ -65,6 +65,16 @@ class ArchitectureTest {
                 com.tngtech.archunit.core.domain.JavaClass.Predicates.resideInAnyPackage(INFRA, ROOT))).check(CLASSES);
     }
 
+    /** The MQTT fleet channel is an adapter of the fleet port: it knows the core and messaging only. */
+    @Test
+    void theMqttChannelKnowsOnlyTheCoreAndMessaging() {
+        noClasses().that().resideInAPackage("rason.messaging.mqtt..").should().dependOnClassesThat(ARCHITECTURES.or(
+                com.tngtech.archunit.core.domain.JavaClass.Predicates.resideInAnyPackage("rason.action..",
+                        "rason.perception..", "rason.mind..", INFRA, ROOT))).check(CLASSES);
+        noClasses().that().resideInAPackage("rason.messaging").should().dependOnClassesThat()
+                .resideInAPackage("rason.messaging.mqtt..").check(CLASSES);
+    }
+
     @Test
     void theArchitecturesKnowNoInfrastructureOrRoot() {
         noClasses().that(ARCHITECTURES).should().dependOnClassesThat().resideInAnyPackage(INFRA, ROOT).check(CLASSES);
