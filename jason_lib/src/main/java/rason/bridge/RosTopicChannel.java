@@ -54,7 +54,7 @@ public final class RosTopicChannel implements FleetChannel {
     /** The authentication fields of the presence the node is about to announce. */
     public FleetAuth.Signed signPresence(String[] agents, String[] dfAgents, String[] dfServices, float period,
             boolean leaving) {
-        return port.signPresence(agents, dfAgents, dfServices, period, leaving);
+        return port.signPresence(agents, dfAgents, dfServices, period, leaving, "");
     }
 
     /**
@@ -74,7 +74,7 @@ public final class RosTopicChannel implements FleetChannel {
     public void presenceAnnounced(String mas, long incarnation, String[] names, String[] dfAgents, String[] dfServices,
             float period, boolean leaving, long sequence, long stamp, String keyId, byte[] mac, String publisher) {
         port.presenceAnnounced(mas, incarnation, names, dfAgents, dfServices, period, leaving, sequence, stamp, keyId,
-                mac, publisher);
+                mac, publisher, "");
     }
 
     /** Periodic presence check with the processes our message publisher is connected to. */

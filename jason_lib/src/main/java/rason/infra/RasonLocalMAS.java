@@ -272,12 +272,12 @@ public class RasonLocalMAS extends RunLocalMAS {
 
     @Override
     public void dfRegister(String agName, String service) {
-        host.fleet().dfRegister(agName, service);
+        host.fleet().df().register(agName, service);
     }
 
     @Override
     public void dfDeRegister(String agName, String service) {
-        host.fleet().dfDeregister(agName, service);
+        host.fleet().df().deregister(agName, service);
     }
 
     @Override
@@ -297,7 +297,7 @@ public class RasonLocalMAS extends RunLocalMAS {
 
     @Override
     public LocalAgArch delAg(String agName) {
-        host.fleet().dfAgentGone(agName);
+        host.fleet().df().agentGone(agName);
         return super.delAg(agName);
     }
 

@@ -18,28 +18,9 @@ import rason.core.WarnOnce;
  * This process among the other rason_mas processes of the fleet (thesis
  * §5.6): who is reachable, from their presence announcements and messages, and
  * which incoming agent messages are well-formed. Logs what changes; tells its
- * {@link Listener} when the reachable agents change or some leave.
+ * {@link FleetListener} when the reachable agents change or some leave.
  */
 public final class Fleet {
-
-    /** What the agents need to hear of the fleet. */
-    public interface Listener {
-        /** The set of reachable agents changed (present/1 beliefs). */
-        void reachableChanged();
-
-        /** These agents' processes ended: answers they owe will never come. */
-        void receiversLost(Collection<String> names);
-
-        /** This process must not go on (it duplicates an earlier one's agent in the same namespace). */
-        void mustStop(String why);
-
-        /**
-         * Subscribers of the directory facilitator must hear of providers that came or went
-         * (called under the directory's lock, in order: only queue them for the agents).
-         */
-        default void providersChanged(List<FleetDirectory.Notice> notices) {
-        }
-    }
 
     /** An incoming agent message that passed the checks. */
     public record Incoming(String what, Term content) {
@@ -49,7 +30,7 @@ public final class Fleet {
     public static final String NAME_PATTERN = "[a-z][A-Za-z0-9_]*";
 
     private final Logger logger;
-    private final Listener listener;
+    private final FleetListener listener;
     private final PresenceTable presence = new PresenceTable(); // guarded by itself
     private final WarnOnce warned;
     private final RateLimitedLog limited;
@@ -63,7 +44,7 @@ public final class Fleet {
     private volatile boolean stopping = false;
 
     /** With the default input limits, on the wall clock. */
-    public Fleet(Logger logger, Listener listener) {
+    public Fleet(Logger logger, FleetListener listener) {
         this(logger, listener, new RateLimitedLog(logger), new FleetAuth(), new InputLimits(), Clock.WALL);
     }
 
@@ -74,7 +55,7 @@ public final class Fleet {
      * @param limits the bounds on incoming content
      * @param wall measures silences and stamps log periods
      */
-    public Fleet(Logger logger, Listener listener, RateLimitedLog limited, FleetAuth auth, InputLimits limits,
+    public Fleet(Logger logger, FleetListener listener, RateLimitedLog limited, FleetAuth auth, InputLimits limits,
             Clock wall) {
         this.logger = logger;
         this.listener = listener;
@@ -127,23 +108,13 @@ public final class Fleet {
     }
 
     /**
-     * A rason_msgs/Presence arrived. Our own announcements are ignored, malformed
-     * ones with a log line, and (with authentication on) those that are not
-     * authentic with a rate-limited one: they change nothing.
+     * A presence announcement arrived, with its directory registrations (dfAgents[i] provides
+     * dfServices[i]). Our own announcements are ignored, malformed ones with a log line, and
+     * (with authentication on) those that are not authentic with a rate-limited one: they
+     * change nothing. The registrations of agents it announces replace what it announced before.
      *
      * @param signed its authentication fields; signed.incarnation() is the announcing process's
-     * @param publisher the node that published it (from the connection; "" if unknown)
-     */
-    public void presenceAnnounced(String mas, String[] names, boolean leaving, float period, FleetAuth.Signed signed,
-            String publisher) {
-        presenceAnnounced(mas, names, NONE, NONE, leaving, period, signed, publisher);
-    }
-
-    private static final String[] NONE = new String[0];
-
-    /**
-     * A rason_msgs/Presence with directory registrations (dfAgents[i] provides dfServices[i]):
-     * as above, and the registrations of agents it announces replace what it announced before.
+     * @param publisher who published it, as the channel knows it ("" if unknown)
      */
     public void presenceAnnounced(String mas, String[] names, String[] dfAgents, String[] dfServices, boolean leaving,
             float period, FleetAuth.Signed signed, String publisher) {

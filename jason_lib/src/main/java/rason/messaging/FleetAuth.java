@@ -1,7 +1,5 @@
 package rason.messaging;
 
-import java.io.ByteArrayOutputStream;
-import java.nio.charset.StandardCharsets;
 import java.security.GeneralSecurityException;
 import java.security.MessageDigest;
 import java.time.Instant;
@@ -176,7 +174,7 @@ public final class FleetAuth {
      * @throws IllegalStateException authentication is required and there is no key
      */
     public Signed sign(WireMessage m) {
-        return sign(messageSequence.incrementAndGet(), s -> canonicalMessage(m, s));
+        return sign(messageSequence.incrementAndGet(), s -> CanonicalForm.message(m, s));
     }
 
     /** The authentication fields of our next presence announcement (in the order of publishing). */
@@ -197,7 +195,7 @@ public final class FleetAuth {
     public Signed signPresence(String masId, List<String> agents, List<String> dfAgents, List<String> dfServices,
             float period, boolean leaving, String link) {
         return sign(presenceSequence.incrementAndGet(),
-                s -> canonicalPresence(masId, agents, dfAgents, dfServices, period, leaving, link, s));
+                s -> CanonicalForm.presence(masId, agents, dfAgents, dfServices, period, leaving, link, s));
     }
 
     /**
@@ -208,7 +206,7 @@ public final class FleetAuth {
      * connection it names is over.
      */
     public Signed signWill(String masId, String link) {
-        return sign(0, s -> canonicalWill(masId, link, s));
+        return sign(0, s -> CanonicalForm.will(masId, link, s));
     }
 
     private Signed sign(long sequence, Function<Signed, byte[]> canonical) {
@@ -229,7 +227,7 @@ public final class FleetAuth {
     public Refusal verify(WireMessage m, Signed s) {
         if (!required)
             return null;
-        Refusal r = macProblem(s, () -> canonicalMessage(m, s));
+        Refusal r = macProblem(s, () -> CanonicalForm.message(m, s));
         return r != null ? r : clockProblem(s);
     }
 
@@ -252,7 +250,7 @@ public final class FleetAuth {
         if (!required)
             return null;
         Refusal r = macProblem(s,
-                () -> canonicalPresence(masId, agents, dfAgents, dfServices, period, leaving, link, s));
+                () -> CanonicalForm.presence(masId, agents, dfAgents, dfServices, period, leaving, link, s));
         return r != null ? r : clockProblem(s);
     }
 
@@ -263,7 +261,7 @@ public final class FleetAuth {
     public Refusal verifyWill(String masId, String link, Signed s) {
         if (!required)
             return null;
-        return macProblem(s, () -> canonicalWill(masId, link, s));
+        return macProblem(s, () -> CanonicalForm.will(masId, link, s));
     }
 
     /**
@@ -356,44 +354,6 @@ public final class FleetAuth {
         return null;
     }
 
-    // ---- the canonical encoding --------------------------------------------------------
-
-    /** The bytes the MAC of an agent message covers (s's MAC itself excluded). */
-    public static byte[] canonicalMessage(WireMessage m, Signed s) {
-        Canonical c = header(Kind.MESSAGE, m.senderMas(), s);
-        c.string(m.sender()).string(m.receiverMas()).string(m.receiver()).string(m.performative())
-                .string(m.content()).string(m.msgId()).string(m.inReplyTo());
-        return c.bytes();
-    }
-
-    /** The bytes the MAC of a presence covers (s's MAC itself excluded). */
-    public static byte[] canonicalPresence(String masId, List<String> agents, List<String> dfAgents,
-            List<String> dfServices, float period, boolean leaving, Signed s) {
-        return canonicalPresence(masId, agents, dfAgents, dfServices, period, leaving, "", s);
-    }
-
-    /** The same, with the connection it is announced over (appended only when there is one). */
-    public static byte[] canonicalPresence(String masId, List<String> agents, List<String> dfAgents,
-            List<String> dfServices, float period, boolean leaving, String link, Signed s) {
-        Canonical c = header(Kind.PRESENCE, masId, s);
-        c.strings(agents);
-        c.int32(Float.floatToIntBits(period)).int8(leaving ? 1 : 0);
-        c.strings(dfAgents).strings(dfServices);
-        if (link != null && !link.isEmpty())
-            c.string(link);
-        return c.bytes();
-    }
-
-    /** The bytes the MAC of a last will covers. */
-    public static byte[] canonicalWill(String masId, String link, Signed s) {
-        return header(Kind.WILL, masId, s).string(link).bytes();
-    }
-
-    private static Canonical header(Kind kind, String mas, Signed s) {
-        return new Canonical().string(kind.tag).string(s.keyId()).string(mas).int64(s.incarnation())
-                .int64(s.sequence()).int64(s.stamp());
-    }
-
     private static byte[] mac(FleetKeys.Key key, byte[] data) {
         Mac mac = MACS.get();
         try {
@@ -402,46 +362,5 @@ public final class FleetAuth {
             throw new IllegalStateException("cannot use fleet " + key, e);
         }
         return mac.doFinal(data);
-    }
-
-    /** Length-prefixed UTF-8 strings and big-endian integers: no two field lists encode alike. */
-    private static final class Canonical {
-        private final ByteArrayOutputStream out = new ByteArrayOutputStream(256);
-
-        Canonical string(String s) {
-            byte[] b = (s == null ? "" : s).getBytes(StandardCharsets.UTF_8);
-            int32(b.length);
-            out.write(b, 0, b.length);
-            return this;
-        }
-
-        /** A list: its size (4 bytes), then each string. */
-        Canonical strings(List<String> list) {
-            int32(list.size());
-            for (String s : list)
-                string(s);
-            return this;
-        }
-
-        Canonical int64(long v) {
-            for (int shift = 56; shift >= 0; shift -= 8)
-                out.write((int) (v >>> shift));
-            return this;
-        }
-
-        Canonical int32(int v) {
-            for (int shift = 24; shift >= 0; shift -= 8)
-                out.write(v >>> shift);
-            return this;
-        }
-
-        Canonical int8(int v) {
-            out.write(v);
-            return this;
-        }
-
-        byte[] bytes() {
-            return out.toByteArray();
-        }
     }
 }

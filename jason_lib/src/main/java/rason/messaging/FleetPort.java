@@ -6,17 +6,12 @@ import java.util.Collection;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
 import java.util.logging.Logger;
 
 import jason.asSemantics.Message;
 import jason.asSemantics.TransitionSystem;
-import jason.asSyntax.ASSyntax;
-import jason.asSyntax.Atom;
-import jason.asSyntax.Literal;
-import jason.asSyntax.StringTermImpl;
 import jason.infra.local.LocalAgArch;
 
 import rason.core.Clock;
@@ -30,10 +25,8 @@ import rason.core.RateLimitedLog;
  * mailboxes; what our agents send leaves through the {@link FleetChannel}; the
  * directory facilitator spans the fleet ({@link FleetDirectory}).
  */
-public final class FleetPort implements Fleet.Listener {
+public final class FleetPort implements FleetListener {
 
-    /** Jason's name for the directory facilitator: subscribers hear from it, as in one MAS. */
-    public static final String DF_NAME = "df";
     /** Kind of the rate-limited lines of messages the trust policy refused. */
     public static final String REFUSED_MESSAGE = "refused message";
 
@@ -49,7 +42,7 @@ public final class FleetPort implements Fleet.Listener {
     private final Consumer<List<String>> presence;
     private final Runnable mustStop;
     private final Object presencePushLock = new Object();
-    private final AtomicBoolean announceQueued = new AtomicBoolean();
+    private final DirectoryFacilitator df;
     private volatile boolean presenceBeliefs = true;
     private volatile long askTimeoutNanos;
     private final FleetNames names;
@@ -74,6 +67,7 @@ public final class FleetPort implements Fleet.Listener {
         this.askTimeoutNanos = askTimeoutNanos;
         this.fleet = new Fleet(logger, this, limited, new FleetAuth(), limits, wall);
         this.names = new FleetNames(agents.keySet(), jasonAgents, fleet);
+        this.df = new DirectoryFacilitator(fleet.directory(), jasonAgents, () -> this.channel);
     }
 
     public Fleet fleet() {
@@ -117,7 +111,7 @@ public final class FleetPort implements Fleet.Listener {
     private void localAgentsChanged() {
         fleet.localAgentsChanged(agents.keySet());
         reachableChanged();
-        announceSoon();
+        df.announceSoon();
     }
 
     /** The names of this process's agents, and of every agent it can reach. */
@@ -231,17 +225,11 @@ public final class FleetPort implements Fleet.Listener {
 
     /**
      * A presence announcement arrived (see {@link Fleet#presenceAnnounced}), with the directory
-     * registrations it announces (dfAgents[i] provides dfServices[i]).
+     * registrations it announces (dfAgents[i] provides dfServices[i]), over the channel
+     * connection named link ("" if the channel has none; see {@link Fleet#willArrived}).
      *
      * @param publisher who published it, as the channel knows it ("" if unknown)
      */
-    public void presenceAnnounced(String mas, long incarnation, String[] names, String[] dfAgents, String[] dfServices,
-            float period, boolean leaving, long sequence, long stamp, String keyId, byte[] mac, String publisher) {
-        fleet.presenceAnnounced(mas, names, dfAgents, dfServices, leaving, period,
-                new FleetAuth.Signed(incarnation, sequence, stamp, keyId, mac), publisher);
-    }
-
-    /** The same, announced over the channel connection named link (see {@link Fleet#willArrived}). */
     public void presenceAnnounced(String mas, long incarnation, String[] names, String[] dfAgents, String[] dfServices,
             float period, boolean leaving, long sequence, long stamp, String keyId, byte[] mac, String publisher,
             String link) {
@@ -317,14 +305,10 @@ public final class FleetPort implements Fleet.Listener {
                 m.getIlForce(), Messages.contentText(m), m.getMsgId(), m.getInReplyTo() == null ? "" : m.getInReplyTo()));
     }
 
-    /** The authentication fields of our next presence announcement; sign in the order of publishing. */
-    public FleetAuth.Signed signPresence(String[] agents, String[] dfAgents, String[] dfServices, float period,
-            boolean leaving) {
-        return fleet.auth().signPresence(fleet.getMasId(), List.of(agents), List.of(dfAgents), List.of(dfServices),
-                period, leaving);
-    }
-
-    /** The same, announced over our channel connection named link. */
+    /**
+     * The authentication fields of our next presence announcement, over our channel connection
+     * named link ("" if the channel has none); sign in the order of publishing.
+     */
     public FleetAuth.Signed signPresence(String[] agents, String[] dfAgents, String[] dfServices, float period,
             boolean leaving, String link) {
         return fleet.auth().signPresence(fleet.getMasId(), List.of(agents), List.of(dfAgents), List.of(dfServices),
@@ -344,62 +328,27 @@ public final class FleetPort implements Fleet.Listener {
         return fleet.auth().sign(m);
     }
 
-    /** Our registrations, for the presence about to be announced (a later change queues another). */
-    public FleetDirectory.Announced announced() {
-        announceQueued.set(false);
-        return fleet.directory().announced();
+    /** Jason's directory facilitator over the fleet: our registrations and the fleet's. */
+    public DirectoryFacilitator df() {
+        return df;
     }
 
-    /**
-     * Other processes hear of a change of our agents or their registrations at once, not at our
-     * next periodic announcement (one announcement for changes queued before it goes out).
-     */
-    void announceSoon() {
-        if (announceQueued.compareAndSet(false, true) && !channel.announceNow())
-            announceQueued.set(false); // no channel yet: its first announcement will have them
+    /** Our registrations, for the presence about to be announced (a later change queues another). */
+    public FleetDirectory.Announced announced() {
+        return df.announced();
     }
 
     /** A node takes the channel again: an earlier node's queued announcement went with it. */
     public void reopen() {
-        announceQueued.set(false);
+        df.reopen();
     }
 
-    // ---- the directory facilitator (Jason's .df_* through the infrastructure) -----------
-
-    public void dfRegister(String agent, String service) {
-        if (fleet.directory().register(agent, service))
-            announceSoon();
-    }
-
-    public void dfDeregister(String agent, String service) {
-        if (fleet.directory().deregister(agent, service))
-            announceSoon();
-    }
-
-    /** A hosted agent stopped: its registrations and subscriptions go. */
-    public void dfAgentGone(String agent) {
-        if (fleet.directory().agentGone(agent))
-            announceSoon();
-    }
-
-    /**
-     * Tells subscribers what the directory says changed, as Jason's DF does: tell
-     * provider(Agent, "service") from df when one comes, untell when one goes. Only queues
-     * the messages in their mailboxes: each agent takes them on its own thread.
-     */
     @Override
     public void providersChanged(List<FleetDirectory.Notice> notices) {
-        Map<String, LocalAgArch> hosted = jasonAgents();
-        for (FleetDirectory.Notice n : notices) {
-            LocalAgArch la = hosted.get(n.subscriber());
-            if (la == null)
-                continue;
-            Literal provider = ASSyntax.createLiteral("provider", new Atom(n.provider()), new StringTermImpl(n.service()));
-            la.receiveMsg(new Message(n.added() ? "tell" : "untell", DF_NAME, n.subscriber(), provider));
-        }
+        df.providersChanged(notices);
     }
 
-    // ---- Fleet.Listener ------------------------------------------------------------------
+    // ---- FleetListener ------------------------------------------------------------------
 
     /** Gives every agent the current present/1 list; the lock keeps a newer list from being overtaken by an older one. */
     @Override

@@ -89,9 +89,9 @@ class DirectoryAgentsTest {
         assertArrayEquals(new String[] { "paint_svc" }, bridge.rosChannel().announced().services());
         List<String> hosted = List.of(bridge.agentNames());
         assertTrue(hosted.containsAll(List.of("boss", "painter")), hosted.toString());
-        assertFalse(hosted.contains(rason.messaging.FleetPort.DF_NAME), "no df among our agents: " + hosted);
-        assertNull(mas.getAg(rason.messaging.FleetPort.DF_NAME), "Jason's df agent was never made");
-        assertFalse(bridge.fleet().names().allNames().contains(rason.messaging.FleetPort.DF_NAME));
+        assertFalse(hosted.contains(rason.messaging.DirectoryFacilitator.DF_NAME), "no df among our agents: " + hosted);
+        assertNull(mas.getAg(rason.messaging.DirectoryFacilitator.DF_NAME), "Jason's df agent was never made");
+        assertFalse(bridge.fleet().names().allNames().contains(rason.messaging.DirectoryFacilitator.DF_NAME));
 
         announceOtherRobot(false, new String[] { "far_painter" }, new String[] { "paint_svc" });
         await("boss searches after hearing of far_painter", () -> believes("boss", "found([far_painter, painter])"));

@@ -31,7 +31,7 @@ final class OtherRobot {
         FleetAuth.Signed p = auth.signPresence(masId, List.of(names), List.of(dfAgents), List.of(dfServices), 0.5f,
                 leaving);
         bridge.fleet().presenceAnnounced(masId, p.incarnation(), names, dfAgents, dfServices, 0.5f, leaving, p.sequence(),
-                p.stamp(), p.keyId(), p.mac(), masId);
+                p.stamp(), p.keyId(), p.mac(), masId, "");
     }
 
     /** Announces names without directory registrations. */

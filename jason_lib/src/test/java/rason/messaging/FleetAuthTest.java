@@ -153,8 +153,8 @@ class FleetAuthTest {
         WireMessage m1 = new WireMessage(ROBOT2, "ab", "", "c", "tell", "x", "", "");
         WireMessage m2 = new WireMessage(ROBOT2, "a", "", "bc", "tell", "x", "", "");
         assertEquals(Problem.BAD_MAC, problem(receiver.verify(m2, sender.sign(m1))));
-        assertFalse(java.util.Arrays.equals(FleetAuth.canonicalMessage(m1, sender.sign(m1)),
-                FleetAuth.canonicalMessage(m2, sender.sign(m1))));
+        assertFalse(java.util.Arrays.equals(CanonicalForm.message(m1, sender.sign(m1)),
+                CanonicalForm.message(m2, sender.sign(m1))));
     }
 
     @Test
@@ -182,7 +182,7 @@ class FleetAuthTest {
             writeString(out, field);
         Mac mac = Mac.getInstance("HmacSHA256");
         mac.init(new SecretKeySpec(SigningPeer.KEY_A.getBytes(StandardCharsets.UTF_8), "HmacSHA256"));
-        assertArrayEquals(bytes.toByteArray(), FleetAuth.canonicalMessage(m, s));
+        assertArrayEquals(bytes.toByteArray(), CanonicalForm.message(m, s));
         assertArrayEquals(mac.doFinal(bytes.toByteArray()), s.mac());
     }
 

@@ -36,7 +36,7 @@ final class SigningPeer {
     /** Its next presence, as published, delivered to fleet. */
     void announce(Fleet fleet, boolean leaving, String... agents) {
         FleetAuth.Signed s = auth.signPresence(mas, List.of(agents), 0.5f, leaving);
-        fleet.presenceAnnounced(mas, agents, leaving, 0.5f, s, mas);
+        fleet.presenceAnnounced(mas, agents, new String[0], new String[0], leaving, 0.5f, s, mas);
     }
 
     /** Its next presence with directory registrations (dfAgents[i] provides dfServices[i]), delivered to fleet. */
@@ -71,13 +71,13 @@ final class SigningPeer {
     }
 
     /** A fleet listener that keeps the reasons it is told to stop in stops and ignores the rest. */
-    static Fleet.Listener stopsInto(List<String> stops) {
+    static FleetListener stopsInto(List<String> stops) {
         return recording(stops, new ArrayList<>());
     }
 
     /** A fleet listener that keeps the stop reasons and the directory's notices it is told. */
-    static Fleet.Listener recording(List<String> stops, List<FleetDirectory.Notice> notices) {
-        return new Fleet.Listener() {
+    static FleetListener recording(List<String> stops, List<FleetDirectory.Notice> notices) {
+        return new FleetListener() {
             @Override
             public void reachableChanged() {
             }

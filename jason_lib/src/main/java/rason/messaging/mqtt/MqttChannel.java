@@ -1,18 +1,7 @@
 package rason.messaging.mqtt;
 
-import java.io.IOException;
-import java.io.InputStream;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
-import java.security.GeneralSecurityException;
-import java.security.KeyStore;
 import java.security.SecureRandom;
-import java.security.cert.Certificate;
-import java.security.cert.CertificateFactory;
 import java.util.HexFormat;
-import java.util.LinkedHashMap;
-import java.util.Map;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
@@ -21,11 +10,9 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.Semaphore;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
-import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 
-import javax.net.ssl.TrustManagerFactory;
 
 import com.hivemq.client.mqtt.MqttClientState;
 import com.hivemq.client.mqtt.MqttGlobalPublishFilter;
@@ -126,13 +113,7 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
     private final AtomicBoolean announceQueued = new AtomicBoolean();
     private final AtomicBoolean running = new AtomicBoolean();
     private final SecureRandom random = new SecureRandom();
-    private final Map<String, long[]> lastSequence = new LinkedHashMap<>(16, 0.75f, true) { // guarded by itself
-        @Override
-        protected boolean removeEldestEntry(Map.Entry<String, long[]> eldest) {
-            return size() > MAX_SENDERS;
-        }
-    };
-    private final AtomicLong duplicates = new AtomicLong();
+    private final SequenceGate duplicates = new SequenceGate(MAX_SENDERS);
     private final Thread sender;
     private final ScheduledExecutorService ticker;
     private volatile String link = "";
@@ -166,9 +147,9 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
                     ((Mqtt5ClientReconnector) c.getReconnector()).connect(connectMessage(false));
                 });
         if (settings.tls())
-            b = b.sslConfig().trustManagerFactory(trust(settings.caFile())).applySslConfig();
+            b = b.sslConfig().trustManagerFactory(MqttCredentials.trust(settings.caFile())).applySslConfig();
         if (!settings.username().isEmpty())
-            b = b.simpleAuth().username(settings.username()).password(password(settings.passwordFile()))
+            b = b.simpleAuth().username(settings.username()).password(MqttCredentials.password(settings.passwordFile()))
                     .applySimpleAuth();
         client = b.buildAsync();
         client.publishes(MqttGlobalPublishFilter.ALL, this::arrived);
@@ -350,7 +331,7 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
             else if (presenceOf != null && payload instanceof MqttPayloads.Will w)
                 port.willArrived(w.mas(), w.link(), w.signed(), presenceOf);
             else if (topics.isMessages(topic) && payload instanceof MqttPayloads.Message m) {
-                if (!port.auth().required() && duplicate(m))
+                if (!port.auth().required() && duplicates.seenBefore(m.message().senderMas(), m.signed()))
                     return;
                 port.deliver(m.message(), m.signed(), "");
             } else
@@ -361,23 +342,9 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
         }
     }
 
-    /** Without authentication, a redelivered message (not above its sender run's last sequence) is dropped here. */
-    private boolean duplicate(MqttPayloads.Message m) {
-        FleetAuth.Signed s = m.signed();
-        synchronized (lastSequence) {
-            long[] last = lastSequence.get(m.message().senderMas());
-            if (last != null && last[0] == s.incarnation() && Long.compareUnsigned(s.sequence(), last[1]) <= 0) {
-                duplicates.incrementAndGet();
-                return true;
-            }
-            lastSequence.put(m.message().senderMas(), new long[] { s.incarnation(), s.sequence() });
-            return false;
-        }
-    }
-
     /** Duplicates this channel dropped itself (authentication off; with it on, FleetAuth drops them). */
     public long duplicatesDropped() {
-        return duplicates.get();
+        return duplicates.dropped();
     }
 
     // ---- leaving -----------------------------------------------------------------------
@@ -424,40 +391,5 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
         sender.interrupt();
         client.disconnectWith().reasonCode(Mqtt5DisconnectReasonCode.DISCONNECT_WITH_WILL_MESSAGE).send()
                 .orTimeout(1, TimeUnit.SECONDS).exceptionally(e -> null).join();
-    }
-
-    // ---- settings ----------------------------------------------------------------------
-
-    private static TrustManagerFactory trust(String caFile) {
-        try {
-            TrustManagerFactory tmf = TrustManagerFactory.getInstance(TrustManagerFactory.getDefaultAlgorithm());
-            if (caFile.isEmpty()) {
-                tmf.init((KeyStore) null);
-                return tmf;
-            }
-            KeyStore store = KeyStore.getInstance(KeyStore.getDefaultType());
-            store.load(null, null);
-            try (InputStream in = Files.newInputStream(Path.of(caFile))) {
-                int i = 0;
-                for (Certificate c : CertificateFactory.getInstance("X.509").generateCertificates(in))
-                    store.setCertificateEntry("ca" + i++, c);
-            }
-            tmf.init(store);
-            return tmf;
-        } catch (IOException | GeneralSecurityException e) {
-            throw new IllegalArgumentException("mqtt_ca_file '" + caFile + "': " + e.getMessage());
-        }
-    }
-
-    private static byte[] password(String file) {
-        if (file.isEmpty())
-            return new byte[0];
-        try {
-            String text = Files.readString(Path.of(file), StandardCharsets.UTF_8);
-            int end = text.indexOf('\n');
-            return (end < 0 ? text : text.substring(0, end)).strip().getBytes(StandardCharsets.UTF_8);
-        } catch (IOException e) {
-            throw new IllegalArgumentException("mqtt_password_file '" + file + "': " + e.getMessage());
-        }
     }
 }

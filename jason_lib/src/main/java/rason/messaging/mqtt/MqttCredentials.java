@@ -1,0 +1,63 @@
+package rason.messaging.mqtt;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.security.GeneralSecurityException;
+import java.security.KeyStore;
+import java.security.cert.Certificate;
+import java.security.cert.CertificateFactory;
+
+import javax.net.ssl.TrustManagerFactory;
+
+/** The broker's credentials as the ~params give them: the CA certificates to trust, the password file. */
+final class MqttCredentials {
+
+    private MqttCredentials() {
+    }
+
+    /**
+     * The trust of a TLS connection: the system's, or the certificates of caFile alone.
+     *
+     * @throws IllegalArgumentException naming mqtt_ca_file and what is wrong with it
+     */
+    static TrustManagerFactory trust(String caFile) {
+        try {
+            TrustManagerFactory tmf = TrustManagerFactory.getInstance(TrustManagerFactory.getDefaultAlgorithm());
+            if (caFile.isEmpty()) {
+                tmf.init((KeyStore) null);
+                return tmf;
+            }
+            KeyStore store = KeyStore.getInstance(KeyStore.getDefaultType());
+            store.load(null, null);
+            try (InputStream in = Files.newInputStream(Path.of(caFile))) {
+                int i = 0;
+                for (Certificate c : CertificateFactory.getInstance("X.509").generateCertificates(in))
+                    store.setCertificateEntry("ca" + i++, c);
+            }
+            tmf.init(store);
+            return tmf;
+        } catch (IOException | GeneralSecurityException e) {
+            throw new IllegalArgumentException("mqtt_ca_file '" + caFile + "': " + e.getMessage());
+        }
+    }
+
+    /**
+     * The password: the first line of file, without surrounding blanks (empty file name: none).
+     *
+     * @throws IllegalArgumentException naming mqtt_password_file and why it cannot be read
+     */
+    static byte[] password(String file) {
+        if (file.isEmpty())
+            return new byte[0];
+        try {
+            String text = Files.readString(Path.of(file), StandardCharsets.UTF_8);
+            int end = text.indexOf('\n');
+            return (end < 0 ? text : text.substring(0, end)).strip().getBytes(StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new IllegalArgumentException("mqtt_password_file '" + file + "': " + e.getMessage());
+        }
+    }
+}
