@@ -218,7 +218,7 @@ PARAMS = (
           'how far a stamp may be from this robot\'s clock', _seconds(0)),
     Param('fleet_channel', 'str', ROS, '', '`ros` or `mqtt`',
           'how this process reaches the others: `ros`: the messages and presence topics of this master; '
-          '`mqtt`: an MQTT 5 broker (`mqtt_*`), from Java (see docs/fleet-channel.md)', _choice(ROS, MQTT)),
+          '`mqtt`: an MQTT 5 broker (`mqtt_*`), from Java (see docs/guides/fleet-channel.md)', _choice(ROS, MQTT)),
     Param('mqtt_url', 'str', 'tcp://127.0.0.1:1883', '', '`tcp://HOST:PORT` or `ssl://HOST:PORT` (TLS)',
           'the broker, with `fleet_channel: mqtt`', _mqtt_url),
     Param('mqtt_prefix', 'str', 'rason/', '', 'a topic prefix without `+` or `#`',
