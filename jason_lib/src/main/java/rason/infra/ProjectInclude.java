@@ -209,24 +209,24 @@ public class ProjectInclude extends Include {
      * one kept as written ({@link #asWritten}), from the working directory; null for a URL.
      */
     private static File includingFile(String source) {
+        String s = localPath(source);
+        return s == null ? null : new File(s).getAbsoluteFile();
+    }
+
+    /** A path, or a file: URL's path, as written; null for nothing or another URL. */
+    private static String localPath(String source) {
         if (source == null || source.isEmpty())
             return null;
         String s = unquote(source);
         if (s.startsWith("file:"))
-            s = s.substring("file:".length());
-        else if (isUrl(s))
-            return null;
-        return new File(s).getAbsoluteFile();
+            return s.substring("file:".length());
+        return isUrl(s) ? null : s;
     }
 
     /** A path or file: URL as a file, relative ones taken from the project's directory; null for other URLs. */
     private File localFile(String source) {
-        if (source == null || source.isEmpty())
-            return null;
-        String s = unquote(source);
-        if (s.startsWith("file:"))
-            s = s.substring("file:".length());
-        else if (isUrl(s))
+        String s = localPath(source);
+        if (s == null)
             return null;
         File f = new File(s);
         if (!f.isAbsolute() && projectDir != null)
