@@ -83,7 +83,9 @@ def main(argv=None):
     except roslaunch.RLException as e:
         print('run_launch: %s\n%s' % (e, USAGE), file=sys.stderr)
         return 2
-    launch_file, launch_args = resolved[0], resolved[1:]
+    # resolve_launch_arguments leaves out the NAME:=VALUE arguments (rosgraph.myargv)
+    launch_file = resolved[0]
+    launch_args = [a for a in argv if ':=' in a]
     run_id = roslaunch.rlutil.get_or_generate_uuid(None, False)
     roslaunch.configure_logging(run_id)
     run_end = RunEnd()
