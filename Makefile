@@ -94,7 +94,7 @@ rostest:
 	$(ROSENV) $(PY) src/rason/test/summarize_results.py build/test_results
 
 demo: setup
-	$(ROSENV) roslaunch rason faulty_helper.launch fault:=both_actuators
+	$(ROSENV) rosrun rason run_launch rason faulty_helper.launch fault:=both_actuators
 
 # The case study at real-time factor 1 and 0 (two campaign runs, about 40 s): same diagnosis,
 # steps within 10 %. Part of make test too; this runs it alone.

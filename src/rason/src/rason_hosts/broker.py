@@ -38,11 +38,14 @@ def _arguments(argv):
                         help='a template, e.g. config/mosquitto/fleet.conf')
     parser.add_argument('--listen', default='127.0.0.1')
     parser.add_argument('--port', type=int, default=1883)
-    parser.add_argument('--fleet', default='', help='ADDR:PORT of the fleet broker (bridge config)')
-    parser.add_argument('--robot', default='', help='robot name (bridge client ids)')
+    parser.add_argument('--fleet', default='', help='ADDR:PORT of the fleet broker (bridge config); none: no fleet')
+    parser.add_argument('--robot', default='', help='robot name (bridge client ids); none: no robot')
     parser.add_argument('--mosquitto', default='mosquitto', help='the broker executable')
     # roslaunch appends __name:=... and __log:=...
-    return parser.parse_args([a for a in argv if ':=' not in a])
+    args = parser.parse_args([a for a in argv if ':=' not in a])
+    # broker.launch's defaults: a launch arg with an empty default would be listed as required
+    args.fleet, args.robot = ['' if v == 'none' else v for v in (args.fleet, args.robot)]
+    return args
 
 
 def main(argv=None):
