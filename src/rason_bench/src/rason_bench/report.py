@@ -1,5 +1,5 @@
 """Turning measurements into verdicts and Markdown (pure: dicts in, text out)."""
-from rason_bench import stats, thesis
+from rason_bench import fleet_report, stats, thesis
 
 #: The issue's goals.
 CYCLE_RATIO_GOAL = 1.2
@@ -85,6 +85,7 @@ def goals(results):
     out += _rate_limit_goals(behaviour.get('rate_limit'))
     out += _sim_goals(behaviour.get('sim'))
     out += _hostile_goals(results.get('hostile', {}))
+    out += fleet_report.goals(results.get('fleet', {}))
     stop = results.get('preemption', {}).get('stop_ms')
     if stop:
         goal = ('preemption: take-back -> zero twist p99 <= %g ms (one 50 Hz control period plus transport)'
@@ -402,10 +403,15 @@ def preemption_table(preemption):
     return '\n'.join(lines) + '\n'
 
 
+def verdict(met):
+    """met, **not met**, or skipped (met None: not measured on this machine)."""
+    return 'skipped' if met is None else 'met' if met else '**not met**'
+
+
 def goals_table(results):
     lines = [_row(['goal', 'measured', 'met']), _row(['---'] * 3)]
     for goal, measured, met in goals(results):
-        lines.append(_row([goal, measured, 'met' if met else '**not met**']))
+        lines.append(_row([goal, measured, verdict(met)]))
     return '\n'.join(lines) + '\n'
 
 
@@ -464,6 +470,8 @@ def markdown(results):
                 preemption_table(p)]
     if 'hostile' in results:
         out += ['## Hostile input', '', hostile_text(results['hostile'])]
+    if 'fleet' in results:
+        out += ['## Fleet channel (MQTT)', '', fleet_report.text(results['fleet'])]
     if 'behaviour' in results:
         out += ['## Behaviour', '', behaviour_text(results['behaviour'])]
     if results.get('durations_s'):
