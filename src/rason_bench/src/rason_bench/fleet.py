@@ -35,6 +35,10 @@ from rason_bench.fleet_report import RATE_P99_BOUND_MS
 AGENTS_DIR = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'agents'))
 
 
+#: How often a wait looks at the lines that came (s); the times measured are the processes' own.
+POLL_S = 0.1
+
+
 class FleetError(RuntimeError):
     """A process did not start, or did not say what was awaited in time."""
 
@@ -56,9 +60,8 @@ class Watched(object):
             line = line.rstrip('\n')
             self._log.write(line + '\n')
             self._log.flush()
-            with self._cond:
+            with self._cond:  # no notify per line: waiters look every POLL_S (they scan every line)
                 self._lines.append(line)
-                self._cond.notify_all()
         with self._cond:
             self._cond.notify_all()
 
@@ -83,7 +86,7 @@ class Watched(object):
                     raise FleetError('no %s within %.0f s' % (what, timeout))
                 if self.proc.poll() is not None and not self._thread.is_alive():
                     raise FleetError('the process ended (status %s) before %s' % (self.proc.returncode, what))
-                self._cond.wait(min(left, 0.2))
+                self._cond.wait(min(left, POLL_S))
 
     def wait_line(self, pattern, timeout, what, since=0):
         """The first line from index since matching pattern (a regex match)."""
@@ -279,8 +282,20 @@ def message_rate(place, key, seconds, log, search=None):
                 '%.1f' % s['p50'] if s['n'] else '-', '%.1f' % p99 if p99 != float('inf') else 'inf'))
             search.record(rate, p99)
             rate = search.next_rate()
+            if p99 > RATE_P99_BOUND_MS and rate is not None:
+                _drain(sim)
     return {'steps': steps, 'seconds_per_step': seconds, 'bound_ms': RATE_P99_BOUND_MS,
             'highest_within': search.highest_within, 'lowest_beyond': search.lowest_beyond}
+
+
+def _drain(sim, rounds=20):
+    """After an overload: small probes until bob answers them all quickly again, so that the
+    next step does not start on the last one's backlog."""
+    for _ in range(rounds):
+        run = _load(sim, 50.0, 0.2)
+        if run['answered'] == run['sent'] and max(run['ms']) < RATE_P99_BOUND_MS / 5:
+            return
+    raise FleetError('bob still lags after an overload (%d probes)' % rounds)
 
 
 def _load(sim, rate, seconds):
