@@ -124,7 +124,7 @@ def main(argv=None):
                 ('hostile.flood', 'hostile input: a perception flood', lambda: hostile.flood(
                     procs, harness, p['flood_seconds'], p['flood_rate_hz'], p['flood_literals'], p['flood_after_s'],
                     log))],
-            'fleet': fleet.steps(procs, p['fleet'], os.path.join(out_dir, 'logs'), log),
+            'fleet': fleet.steps(procs, p['fleet'], os.path.join(out_dir, 'logs'), log) if 'fleet' in parts else [],
             'behaviour': [
                 ('behaviour.wakeup', 'behaviour: idle wake-up', lambda: behaviour.wakeup(
                     procs, harness, wakeups, p['wakeup_gap_s'], log)),
