@@ -17,6 +17,7 @@ every process and namespace); :class:`Watched` keeps the lines.
 """
 import atexit
 import contextlib
+import math
 import os
 import re
 import shutil
@@ -276,10 +277,11 @@ def message_rate(place, key, seconds, log, search=None):
             p99 = fleetcalc.tail_ms(run['ms'], run['sent'], 99)
             s = fleetcalc.summary(run['ms'])
             steps.append(dict((k, v) for k, v in run.items() if k != 'ms'))
-            steps[-1].update(p50_ms=s.get('p50'), p99_ms=p99, max_ms=s.get('max'))
+            # None: p99 fell among the unanswered (JSON has no infinity)
+            steps[-1].update(p50_ms=s.get('p50'), p99_ms=None if p99 == math.inf else p99, max_ms=s.get('max'))
             log('  %6.0f/s offered (%.0f/s achieved): %d of %d answered, p50 %s ms, p99 %s ms' % (
                 rate, run['achieved_rate'] or 0, run['answered'], run['sent'],
-                '%.1f' % s['p50'] if s['n'] else '-', '%.1f' % p99 if p99 != float('inf') else 'inf'))
+                '%.1f' % s['p50'] if s['n'] else '-', '%.1f' % p99 if p99 != math.inf else 'inf'))
             search.record(rate, p99)
             rate = search.next_rate()
             if p99 > RATE_P99_BOUND_MS and rate is not None:
