@@ -36,6 +36,8 @@ from rason_bench.fleet_report import RATE_P99_BOUND_MS
 AGENTS_DIR = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'agents'))
 
 
+#: The message rate's first step (/s); it doubles from there.
+RATE_START_PER_S = 50.0
 #: How often a wait looks at the lines that came (s); the times measured are the processes' own.
 POLL_S = 0.1
 
@@ -131,8 +133,8 @@ class Loopback(object):
 
     needs_root = False
 
-    def __init__(self, procs, log_dir):
-        self.procs, self.log_dir = procs, log_dir
+    def __init__(self, procs, log_dir, tag):
+        self.procs, self.log_dir, self.tag = procs, log_dir, tag
         self.started = []
 
     def broker_url(self):
@@ -146,7 +148,7 @@ class Loopback(object):
     def start(self, host, name, argv, ros=True):
         proc = subprocess.Popen(argv, env=self.procs.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                 stdin=subprocess.PIPE, universal_newlines=True, start_new_session=True)
-        watched = Watched(proc, os.path.join(self.log_dir, name + '.log'))
+        watched = Watched(proc, os.path.join(self.log_dir, 'fleet_%s_%s.log' % (self.tag, name)))
         self.started.append(watched)
         return watched
 
@@ -162,9 +164,9 @@ class Namespaces(object):
 
     needs_root = True
 
-    def __init__(self, names, log_dir):
+    def __init__(self, names, log_dir, tag):
         from rason_hosts import Hosts
-        self.log_dir = log_dir
+        self.log_dir, self.tag = log_dir, tag
         self.hosts = Hosts(['broker'] + list(names))
         try:
             self.hosts.start()
@@ -188,13 +190,13 @@ class Namespaces(object):
         if ros and host not in self.masters:
             core = self.hosts.run(host, ['roscore', '-p', '11311'], env=env, stdout=subprocess.PIPE,
                                   stderr=subprocess.STDOUT, universal_newlines=True)
-            w = Watched(core, os.path.join(self.log_dir, 'roscore_%s.log' % host))
+            w = Watched(core, os.path.join(self.log_dir, 'fleet_%s_roscore_%s.log' % (self.tag, host)))
             self.started.append(w)
             w.wait_line('started core service', 60, 'ROS master on %s' % host)
             self.masters.add(host)
         proc = self.hosts.run(host, argv, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                               stdin=subprocess.PIPE, universal_newlines=True)
-        watched = Watched(proc, os.path.join(self.log_dir, name + '.log'))
+        watched = Watched(proc, os.path.join(self.log_dir, 'fleet_%s_%s.log' % (self.tag, name)))
         self.started.append(watched)
         return watched
 
@@ -261,16 +263,15 @@ def round_trips(place, key, hosts, warmup, count, log):
 def message_rate(place, key, seconds, log, search=None):
     """bob answers ``achieve echo`` from a simulated robot at rates stepped up: each step's
     answers (ms from when each message was due) and the search's answer."""
-    search = search or fleetcalc.RateSearch(bound_ms=RATE_P99_BOUND_MS)
+    search = search or fleetcalc.RateSearch(start=RATE_START_PER_S, bound_ms=RATE_P99_BOUND_MS)
     steps = []
     with placed(place):
         place.start_broker().wait_line(' running|Opening ipv4 listen', 15, 'mosquitto running')
         bob = start_mas(place, None, 'robot2', 'fleet_bob.mas2j', key)
         sim = start_fleet(place, None, key, 1)
         wait_present(bob, ['sim0'], 90)
-        # warm-up: the JIT of both ends, at a rate well within the bound
-        for rate in (200.0, 500.0):
-            _load(sim, rate, seconds)
+        # warm-up: the JIT of both ends, at the first rate of the search
+        _load(sim, RATE_START_PER_S, 3 * seconds)
         rate = search.next_rate()
         while rate is not None:
             run = _load(sim, rate, seconds)
@@ -364,7 +365,7 @@ def false_departures(key, robots, losses, window_s, log_dir, log):
     """Across namespaces: ``robots`` simulated robots on host ``robots``, the observer on host
     ``observer``; per loss (% of frames, on the robots' link only) ``window_s`` s in which no
     robot leaves: the departures the observer notices all the same, and per 10 minutes."""
-    place = Namespaces(['robots', 'observer'], log_dir)
+    place = Namespaces(['robots', 'observer'], log_dir, 'false_departures')
     out = {'robots': robots, 'window_s': window_s, 'lossy_link': 'robots', 'levels': []}
     names = ['sim%d' % i for i in range(robots)]
     with placed(place):
@@ -412,7 +413,8 @@ def steps(procs, params, log_dir, log):
     def across():
         if skip:
             return {'skipped': skip}
-        return round_trips(Namespaces(['r1', 'r2'], log_dir), key, ('r1', 'r2'), p['warmup'], p['round_trips'], log)
+        return round_trips(Namespaces(['r1', 'r2'], log_dir, 'namespaces'), key, ('r1', 'r2'), p['warmup'],
+                           p['round_trips'], log)
 
     def lossy():
         if skip:
@@ -420,10 +422,10 @@ def steps(procs, params, log_dir, log):
         return false_departures(key, p['robots'], p['losses'], p['loss_window_s'], log_dir, log)
     return [
         ('fleet.loopback', 'fleet: achieve round trips over MQTT, loopback', lambda: round_trips(
-            Loopback(procs, log_dir), key, (None, None), p['warmup'], p['round_trips'], log)),
+            Loopback(procs, log_dir, 'loopback'), key, (None, None), p['warmup'], p['round_trips'], log)),
         ('fleet.namespaces', 'fleet: achieve round trips over MQTT, across network namespaces', across),
         ('fleet.rate', 'fleet: message rate until p99 passes %g ms' % RATE_P99_BOUND_MS, lambda: message_rate(
-            Loopback(procs, log_dir), key, p['rate_seconds'], log)),
+            Loopback(procs, log_dir, 'rate'), key, p['rate_seconds'], log)),
         ('fleet.departures', 'fleet: departures among %d simulated robots' % p['robots'], lambda: departures(
-            Loopback(procs, log_dir), key, (None, None), p['robots'], p['singles'], p['batch'], log)),
+            Loopback(procs, log_dir, 'departures'), key, (None, None), p['robots'], p['singles'], p['batch'], log)),
         ('fleet.false_departures', 'fleet: false departures under loss, across network namespaces', lossy)]
