@@ -418,14 +418,14 @@ def goals_table(results):
 def markdown(results):
     """The whole report.md."""
     m = results['machine']
+    cells = ('Each cell: the median of 3 runs of about %g s under the burst. Times are per iteration of thesis '
+             'Listing 5.4 (the thesis\'s "reasoning cycle time"); in brackets the ratio to the baseline (no ROS '
+             'traffic, same agent, same JVM, runs right before and after the cell) and the thesis\'s value (1.8 GHz '
+             'dual-core AMD64).' % results['params']['seconds'] if 'cycle' in results else '')
     out = ['# Rason benchmarks', '',
-           'Written by `make bench` on %s. Machine: %d cores (%s), load average at start %s%s. '
-           'Each cell: the median of 3 runs of about %g s under the burst. Times are per iteration of thesis Listing 5.4 '
-           '(the thesis\'s "reasoning cycle time"); in brackets the ratio to the baseline (no ROS '
-           'traffic, same agent, same JVM, runs right before and after the cell) and the thesis\'s value (1.8 GHz dual-core AMD64).'
-           % (m['date'], m['cpus'], m['cpu_model'], ' / '.join('%.2f' % x for x in m['load_at_start']),
-              '; the simulator campaign was running' if m.get('simulator_running') else '',
-              results['params']['seconds']), '',
+           ('Written by `make bench` on %s. Machine: %d cores (%s), load average at start %s%s. %s'
+            % (m['date'], m['cpus'], m['cpu_model'], ' / '.join('%.2f' % x for x in m['load_at_start']),
+               '; the simulator campaign was running' if m.get('simulator_running') else '', cells)).rstrip(), '',
            '## Goals', '', goals_table(results)]
     cycle = results.get('cycle', {})
     titles = {'accumulate': 'Without filtering (`perception_manager=accumulate`; thesis Table 5.1)',
