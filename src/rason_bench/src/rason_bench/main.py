@@ -3,7 +3,7 @@ their own and writes ``report.md``, ``results.json`` and PNG plots.
 
 Options: ``--seconds`` (length of one measured run, default 1), ``--quick`` (a subset of
 cells, fewer samples, for a smoke run), ``--only`` (cycle, latency, cpu, reaction, scale,
-preemption, hostile, behaviour; repeatable), ``--take-backs`` (rounds of the preemption part), ``--out``
+preemption, hostile, fleet, behaviour; repeatable), ``--take-backs`` (rounds of the preemption part), ``--out``
 (directory).
 """
 import argparse
@@ -18,13 +18,19 @@ import time
 from rason_bench import plots, report, thesis
 
 #: The parts of a run, in the order they run (behaviour last: it starts the simulator).
-PARTS = ('cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'hostile', 'behaviour')
+PARTS = ('cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'hostile', 'fleet', 'behaviour')
 TAKE_BACKS, TAKE_BACKS_QUICK = 200, 50
 #: motion_decomp's ~rate in the preemption part: the 50 Hz control period of the goal.
 CONTROL_RATE_HZ = 50.0
 #: The hostile part's flood (issue 13's): seconds (--quick: FLOOD_SECONDS_QUICK), Hz,
 #: literals per message, and when after it the node's RSS is read (s).
 FLOOD_SECONDS, FLOOD_SECONDS_QUICK, FLOOD_RATE_HZ, FLOOD_LITERALS, FLOOD_AFTER_S = 20.0, 5.0, 1000.0, 50, 10.0
+#: The fleet part (issue 30), normal and --quick: round trips after a warm-up, seconds per step
+#: of the message rate, kills one at a time and at once among FLEET_ROBOTS, and the window of
+#: each loss level (s) in which false departures are counted.
+FLEET = {'warmup': 200, 'round_trips': 1000, 'rate_seconds': 2.0, 'singles': 10, 'batch': 10, 'loss_window_s': 120.0}
+FLEET_QUICK = {'warmup': 100, 'round_trips': 300, 'rate_seconds': 1.0, 'singles': 5, 'batch': 5, 'loss_window_s': 30.0}
+FLEET_ROBOTS, FLEET_LOSSES = 100, (10, 20)
 
 
 def _parse(argv):
@@ -75,7 +81,9 @@ def main(argv=None):
                           'take_backs': take_backs, 'control_rate_hz': CONTROL_RATE_HZ,
                           'flood_seconds': FLOOD_SECONDS_QUICK if args.quick else FLOOD_SECONDS,
                           'flood_rate_hz': FLOOD_RATE_HZ, 'flood_literals': FLOOD_LITERALS,
-                          'flood_after_s': FLOOD_AFTER_S, 'parts': parts}}
+                          'flood_after_s': FLOOD_AFTER_S, 'parts': parts,
+                          'fleet': dict(FLEET_QUICK if args.quick else FLEET, robots=FLEET_ROBOTS,
+                                        losses=list(FLEET_LOSSES))}}
 
     def log(line):
         print(line, flush=True)
@@ -90,7 +98,7 @@ def main(argv=None):
     failed = []
     try:
         import rospy
-        from rason_bench import behaviour, experiments, hostile
+        from rason_bench import behaviour, experiments, fleet, hostile
         from rason_bench.harness import Harness
         rospy.init_node('rason_bench', disable_signals=True)
         harness = Harness()
@@ -116,6 +124,7 @@ def main(argv=None):
                 ('hostile.flood', 'hostile input: a perception flood', lambda: hostile.flood(
                     procs, harness, p['flood_seconds'], p['flood_rate_hz'], p['flood_literals'], p['flood_after_s'],
                     log))],
+            'fleet': fleet.steps(procs, p['fleet'], os.path.join(out_dir, 'logs'), log) if 'fleet' in parts else [],
             'behaviour': [
                 ('behaviour.wakeup', 'behaviour: idle wake-up', lambda: behaviour.wakeup(
                     procs, harness, wakeups, p['wakeup_gap_s'], log)),
@@ -147,7 +156,7 @@ def main(argv=None):
     results['duration_s'] = round(time.monotonic() - started, 1)
     write(results, out_dir)
     for goal, measured, met in report.goals(results):
-        log('%-70s %-40s %s' % (goal, measured, 'met' if met else 'NOT MET'))
+        log('%-70s %-40s %s' % (goal, measured, 'skipped' if met is None else 'met' if met else 'NOT MET'))
     log('wrote %s/report.md (%.0f s)%s' % (out_dir, results['duration_s'],
                                             '; FAILED: ' + ', '.join(failed) if failed else ''))
     return 1 if failed else 0

@@ -1,5 +1,5 @@
 """Turning measurements into verdicts and Markdown (pure: dicts in, text out)."""
-from rason_bench import stats, thesis
+from rason_bench import fleet_report, stats, thesis
 
 #: The issue's goals.
 CYCLE_RATIO_GOAL = 1.2
@@ -85,6 +85,7 @@ def goals(results):
     out += _rate_limit_goals(behaviour.get('rate_limit'))
     out += _sim_goals(behaviour.get('sim'))
     out += _hostile_goals(results.get('hostile', {}))
+    out += fleet_report.goals(results.get('fleet', {}))
     stop = results.get('preemption', {}).get('stop_ms')
     if stop:
         goal = ('preemption: take-back -> zero twist p99 <= %g ms (one 50 Hz control period plus transport)'
@@ -402,24 +403,29 @@ def preemption_table(preemption):
     return '\n'.join(lines) + '\n'
 
 
+def verdict(met):
+    """met, **not met**, or skipped (met None: not measured on this machine)."""
+    return 'skipped' if met is None else 'met' if met else '**not met**'
+
+
 def goals_table(results):
     lines = [_row(['goal', 'measured', 'met']), _row(['---'] * 3)]
     for goal, measured, met in goals(results):
-        lines.append(_row([goal, measured, 'met' if met else '**not met**']))
+        lines.append(_row([goal, measured, verdict(met)]))
     return '\n'.join(lines) + '\n'
 
 
 def markdown(results):
     """The whole report.md."""
     m = results['machine']
+    cells = ('Each cell: the median of 3 runs of about %g s under the burst. Times are per iteration of thesis '
+             'Listing 5.4 (the thesis\'s "reasoning cycle time"); in brackets the ratio to the baseline (no ROS '
+             'traffic, same agent, same JVM, runs right before and after the cell) and the thesis\'s value (1.8 GHz '
+             'dual-core AMD64).' % results['params']['seconds'] if 'cycle' in results else '')
     out = ['# Rason benchmarks', '',
-           'Written by `make bench` on %s. Machine: %d cores (%s), load average at start %s%s. '
-           'Each cell: the median of 3 runs of about %g s under the burst. Times are per iteration of thesis Listing 5.4 '
-           '(the thesis\'s "reasoning cycle time"); in brackets the ratio to the baseline (no ROS '
-           'traffic, same agent, same JVM, runs right before and after the cell) and the thesis\'s value (1.8 GHz dual-core AMD64).'
-           % (m['date'], m['cpus'], m['cpu_model'], ' / '.join('%.2f' % x for x in m['load_at_start']),
-              '; the simulator campaign was running' if m.get('simulator_running') else '',
-              results['params']['seconds']), '',
+           ('Written by `make bench` on %s. Machine: %d cores (%s), load average at start %s%s. %s'
+            % (m['date'], m['cpus'], m['cpu_model'], ' / '.join('%.2f' % x for x in m['load_at_start']),
+               '; the simulator campaign was running' if m.get('simulator_running') else '', cells)).rstrip(), '',
            '## Goals', '', goals_table(results)]
     cycle = results.get('cycle', {})
     titles = {'accumulate': 'Without filtering (`perception_manager=accumulate`; thesis Table 5.1)',
@@ -464,6 +470,8 @@ def markdown(results):
                 preemption_table(p)]
     if 'hostile' in results:
         out += ['## Hostile input', '', hostile_text(results['hostile'])]
+    if 'fleet' in results:
+        out += ['## Fleet channel (MQTT)', '', fleet_report.text(results['fleet'])]
     if 'behaviour' in results:
         out += ['## Behaviour', '', behaviour_text(results['behaviour'])]
     if results.get('durations_s'):
