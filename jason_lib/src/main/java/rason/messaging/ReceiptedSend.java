@@ -58,8 +58,8 @@ public final class ReceiptedSend extends jason.stdlib.send {
                     throw new IllegalStateException("cannot bind .send in " + ial + ": " + e.getMessage(), e);
                 }
             } else { // if/while/for carry their bodies as arguments
-                for (Term arg : ial.getTerms())
-                    rebindNested(arg, ag);
+                for (int a = 0; a < ial.getArity(); a++)
+                    rebindNested(ial.getTerm(a), ag);
             }
         }
     }
@@ -67,9 +67,9 @@ public final class ReceiptedSend extends jason.stdlib.send {
     private static void rebindNested(Term t, Agent ag) {
         if (t instanceof PlanBody pb)
             rebind(pb, ag);
-        else if (t instanceof Structure s && s.getArity() > 0)
-            for (Term arg : s.getTerms())
-                rebindNested(arg, ag);
+        else if (t instanceof Structure s)
+            for (int a = 0; a < s.getArity(); a++)
+                rebindNested(s.getTerm(a), ag);
     }
 
     @Override

@@ -70,6 +70,14 @@ class DeliveryReceiptsTest {
     }
 
     @Test
+    void aSendInsideAnIfWaitsToo() throws Exception {
+        RosAgArch alice = start("alice", "!go. +!go <- .list_rules; if (true) { .send(bob, tell, hello) }; +sent.");
+        Outbound.AgentMessage tell = sentAndWaiting(alice);
+        robot2.send("bob", "alice", "rason_receipt", "delivered", tell.msgId());
+        await("the plan goes on", () -> believes(alice, "sent"));
+    }
+
+    @Test
     void withoutAReceiptWithinTheMessageTtlTheSendFails() throws Exception {
         bridge.fleet().setMessageTtlNanos(5 * SECOND);
         RosAgArch alice = start("alice", SENDER);
