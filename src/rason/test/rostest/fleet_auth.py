@@ -275,7 +275,8 @@ class TestFleetAuth(unittest.TestCase):
 
     def test_the_opt_out_is_announced_and_its_unsigned_traffic_refused(self):
         labbot = Robot('robot4')
-        proc = self.start('robot4', 'labbot', fleet_auth='off')
+        # message_ttl 2 s: alice drops labbot's tell, so no receipt comes and labbot's send fails then
+        proc = self.start('robot4', 'labbot', fleet_auth='off', message_ttl=2.0)
         try:
             self.expect(r'^fleet authentication is OFF', timeout=60, node='/robot4/rason_mas')
             found = self.log.wait_for(r'^dropped presence of /robot4/rason_mas announcing \[labbot\]: unauthenticated',
@@ -286,7 +287,8 @@ class TestFleetAuth(unittest.TestCase):
             # labbot checks nothing, so it believes alice is there; alice refuses what it sends
             wait_for(lambda: run(self.log, labbot, 'labbot', 'names', r'names .*') == 'names [alice,bob,labbot]',
                      20, 'labbot to list alice and bob', interval=0.2)
-            self.dropped(lambda: run(self.log, labbot, 'labbot', 'send(alice, tell, hello(11))', 'sent'),
+            self.dropped(lambda: run(self.log, labbot, 'labbot', 'send(alice, tell, hello(11))',
+                                     r'failed undelivered: no receipt from \[alice\] .*'),
                          r'^dropped message tell from labbot \(/robot4/rason_mas\) to alice: unauthenticated',
                          ALICE_MAS)
             self.assertEqual(run(self.log, self.r1, 'alice', 'present', r'present .*'), 'present [alice,bob]')

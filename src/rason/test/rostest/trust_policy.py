@@ -21,6 +21,9 @@ def told_plan(n):
     return '"+!trick%d <- .print(\\"trick %d\\")."' % (n, n)
 
 
+# what a sender prints when the receiver's trust policy refused its message (from the receipt)
+REFUSED = r'failed refused: %s refused it \(its trust policy\)'
+
 class TestTrustPolicy(unittest.TestCase):
 
     @classmethod
@@ -44,7 +47,8 @@ class TestTrustPolicy(unittest.TestCase):
 
     def test_a_plan_told_by_another_robot_is_refused_by_default(self):
         n = next(_tricks)
-        run(self.log, self.r2, 'carol', 'send(guarded, tellHow, %s)' % told_plan(n), 'sent')
+        # the sender learns it too: its receipt says refused, and the send fails
+        run(self.log, self.r2, 'carol', 'send(guarded, tellHow, %s)' % told_plan(n), REFUSED % 'guarded')
         self.expect(r'^refused tellHow from carol \(/robot2/rason_mas\) to guarded: guarded takes tellHow from '
                     r'no agent of another robot \(trust_tellHow')
         # the goal the plan was for has no plan: Jason's own failure, nothing printed by the plan
@@ -53,7 +57,7 @@ class TestTrustPolicy(unittest.TestCase):
         self.assertEqual(self.log.lines(r'^\[guarded\] trick %d$' % n), [])
 
     def test_another_robot_cannot_read_plans_by_default(self):
-        run(self.log, self.r2, 'carol', 'send(guarded, askHow, "+!greet(X)")', 'sent')
+        run(self.log, self.r2, 'carol', 'send(guarded, askHow, "+!greet(X)")', REFUSED % 'guarded')
         self.expect(r'^refused askHow from carol \(/robot2/rason_mas\) to guarded')
 
     def test_a_trusting_agent_takes_plans_from_other_robots(self):
@@ -65,7 +69,7 @@ class TestTrustPolicy(unittest.TestCase):
     def test_the_answer_to_an_ask_how_reaches_the_asker_and_only_the_trusted_may_ask(self):
         n = next(_tricks)
         run(self.log, self.r2, 'carol', 'send(open, tellHow, %s)' % told_plan(n), 'sent')
-        run(self.log, self.r3, 'mallory', 'send(open, askHow, "+!trick%d")' % n, 'sent')
+        run(self.log, self.r3, 'mallory', 'send(open, askHow, "+!trick%d")' % n, REFUSED % 'open')
         self.expect(r'^refused askHow from mallory \(/robot3/rason_mas\) to open: open takes askHow from '
                     r"other robots' carol only")
         # carol asks after open has the plan (the refusal above came after carol's tellHow)
@@ -79,7 +83,7 @@ class TestTrustPolicy(unittest.TestCase):
             self.assertLess(rospy.get_time(), deadline, 'carol never got the plan she asked for')
 
     def test_the_parameter_restricts_who_may_give_an_agent_goals(self):
-        run(self.log, self.r3, 'mallory', 'send(guarded, achieve, greet(mallory_goal))', 'sent')
+        run(self.log, self.r3, 'mallory', 'send(guarded, achieve, greet(mallory_goal))', REFUSED % 'guarded')
         self.expect(r'^refused achieve from mallory \(/robot3/rason_mas\) to guarded: guarded takes achieve from '
                     r"other robots' carol only")
         run(self.log, self.r2, 'carol', 'send(guarded, achieve, greet(carol_goal))', 'sent')

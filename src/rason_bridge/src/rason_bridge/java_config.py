@@ -42,6 +42,7 @@ def push(java_bridge, settings, mas_id, incarnation):
     perception.setTtlNanos(_nanos(settings, 'perception_ttl'))
     fleet.setPresenceTimeoutNanos(_nanos(settings, 'presence_timeout'))
     fleet.setAskTimeoutNanos(_nanos(settings, 'ask_timeout'))
+    fleet.setMessageTtlNanos(_nanos(settings, 'message_ttl'))
     fleet.setPresenceBeliefs(settings.presence_beliefs)
     try:
         perception.setDefaultManager(settings.perception_manager)

@@ -224,7 +224,9 @@ PARAMS = (
     Param('mqtt_prefix', 'str', 'rason/', '', 'a topic prefix without `+` or `#`',
           'what every fleet topic on the broker starts with (a fleet per prefix)', _mqtt_prefix),
     Param('message_ttl', 'float', 60.0, 's (wall clock)', 'a whole number of seconds, 1 or more',
-          'how long the broker keeps a message (and our session) for a process that is away; MQTT only',
+          'how long a message to an agent of another process may take: the sending intention waits for the '
+          'receiver\'s receipt this long, then fails with `error(undelivered)`; over MQTT also how long the broker '
+          'keeps the message (and our session) for a process that is away',
           _seconds(1)),
     Param('mqtt_username', 'str', '', '', 'a string', 'the broker user; empty: none', _text, shown_default="''"),
     Param('mqtt_password_file', 'str', '', '', 'a path',

@@ -49,10 +49,7 @@ public final class Bridge implements MasHost {
     private volatile MqttChannel mqtt; // the fleet channel instead of rosChannel, if chosen
     private volatile RasonLocalMAS mas;
 
-    /**
-     * The ports start with everything that has a duration off (no action timeout, no
-     * perception expiry, no ask timeout) until the node sets its ~params.
-     */
+    /** The ports start with every duration off (no action timeout, perception expiry, ask timeout) until the node sets its ~params. */
     public Bridge() {
         this(Clock.WALL);
     }
@@ -96,6 +93,8 @@ public final class Bridge implements MasHost {
         MqttChannel channel = new MqttChannel(fleet, settings, logger, wall);
         mqtt = channel;
         fleet.useChannel(channel);
+        // the broker keeps a silent robot's session: what is sent to it meanwhile may still arrive
+        fleet.fleet().setAwayHoldNanos(settings.messageTtlSeconds() * 1_000_000_000L);
         channel.start();
         return channel;
     }
@@ -193,10 +192,7 @@ public final class Bridge implements MasHost {
         fleet.shutdown(reason);
     }
 
-    /**
-     * Our agents leave the fleet: with the MQTT channel, a leaving presence goes out and the
-     * connection closes (waiting at most timeoutMillis). The ROS channel's node announces its own.
-     */
+    /** Our agents leave the fleet: over MQTT a leaving presence, then the connection closes (at most timeoutMillis). */
     public void leaveFleet(long timeoutMillis) {
         MqttChannel m = mqtt;
         if (m != null)
@@ -242,10 +238,7 @@ public final class Bridge implements MasHost {
         return fleet.names().localAgents();
     }
 
-    /**
-     * A burst of input is over (the node saw a perception flood end): a garbage collection now
-     * lets the JVM shrink the heap the burst grew (concurrent with the node's JVM options).
-     */
+    /** A perception flood ended: a (concurrent) garbage collection lets the JVM shrink the heap the burst grew. */
     public void releaseMemory() {
         System.gc();
     }

@@ -41,6 +41,8 @@ public final class AgentMessaging {
     private final Runnable wake;
     private final RemoteAsks asks = new RemoteAsks();
     private final SentAsks sentAsks = new SentAsks();
+    private final SentReceipts receipts = new SentReceipts();
+    private List<String> collecting; // message ids of the running .send that wait for receipts (agent's thread)
     private volatile String stopping = null; // set at shutdown
 
     AgentMessaging(String agent, TransitionSystem ts, FleetPort port, Local local, Runnable wake) {
@@ -49,6 +51,7 @@ public final class AgentMessaging {
         this.port = port;
         this.local = local;
         this.wake = wake;
+        ReceiptedSend.install(ts.getAg(), this);
     }
 
     /**
@@ -78,6 +81,11 @@ public final class AgentMessaging {
             asks.track(m.getMsgId(), to, port.rosNow(), hasJasonTimeout(m.getMsgId()) ? 0 : port.askTimeoutNanos());
         if (m.isAsk())
             sentAsks.sent(m.getMsgId(), to);
+        boolean receipted = !syncAsk && collecting != null;
+        if (receipted) {
+            receipts.expect(m.getMsgId(), to, mas, port.wallNow());
+            collecting.add(m.getMsgId());
+        }
         try {
             publish(mas, m);
         } catch (JasonException e) {
@@ -85,13 +93,41 @@ public final class AgentMessaging {
                 asks.forget(m.getMsgId());
                 ts.getC().removePendingIntention(m.getMsgId());
             }
+            if (receipted)
+                receipts.forget(m.getMsgId());
             throw e;
         }
         // it may have left between the look-up and the tracking: its departure is then already past
-        if (syncAsk && port.fleet().sendableMasOf(to) == null) {
+        if ((syncAsk || receipted) && port.fleet().sendableMasOf(to) == null) {
             asks.receiversLost(List.of(to));
+            receipts.receiversLost(List.of(to));
             wake.run();
         }
+    }
+
+    /** The pending-intention key of a send waiting for the receipts of message msgId. */
+    static String receiptKey(String msgId) {
+        return "rason_receipt_" + msgId;
+    }
+
+    /** A .send starts: the remote messages it sends (their ids go in the list) wait for receipts. */
+    List<String> collectRemote() {
+        collecting = new ArrayList<>();
+        return collecting;
+    }
+
+    /** The .send ended (sent: false if it failed, and nothing waits). */
+    void endCollecting(boolean sent) {
+        if (!sent)
+            for (String id : collecting)
+                receipts.forget(id);
+        collecting = null;
+    }
+
+    /** An authentic receipt for a message of this agent (from a channel's thread). */
+    void receiptArrived(WireMessage receipt) {
+        if (receipts.arrived(receipt.inReplyTo(), receipt.sender(), receipt.senderMas(), Receipts.refused(receipt)))
+            wake.run();
     }
 
     /** .broadcast: every other hosted agent through Jason's mailbox, every other process with one fleet message. */
@@ -144,13 +180,14 @@ public final class AgentMessaging {
 
     /** Some remote agents left or restarted (from a node's thread): asks waiting for them will never be answered. */
     void receiversLost(Collection<String> names) {
-        if (asks.receiversLost(names))
+        boolean asking = asks.receiversLost(names);
+        if (receipts.receiversLost(names) || asking)
             wake.run();
     }
 
     /** Periodic, with the ROS time. */
     void tick(long rosNanos) {
-        if (asks.due(rosNanos))
+        if (asks.due(rosNanos) || receipts.due(port.wallNow(), port.messageTtlNanos()))
             wake.run();
     }
 
@@ -160,32 +197,54 @@ public final class AgentMessaging {
         wake.run();
     }
 
-    /** Whether {@link #settle} has asks to fail. */
+    /** Whether {@link #settle} has asks to fail or sends to end. */
     public boolean hasLost() {
-        return asks.hasLost();
+        return asks.hasLost() || receipts.hasNews();
     }
 
-    /** On the agent's thread: fails asks whose receiver left, that timed out, or that the stopping node leaves. */
+    /**
+     * On the agent's thread: fails asks whose receiver left, that timed out, or that the
+     * stopping node leaves; resumes sends whose receipts came, fails the others that ended.
+     */
     public void settle() {
-        if (asks.isEmpty() && !asks.hasLost())
-            return;
         Map<String, Intention> waiting = ts.getC().getPendingIntentions();
-        for (RemoteAsks.Failure f : asks.settle(waiting::containsKey, port.rosNow(), stopping))
-            fail(f);
+        if (!asks.isEmpty() || asks.hasLost())
+            for (RemoteAsks.Failure f : asks.settle(waiting::containsKey, port.rosNow(), stopping))
+                fail(f);
+        if (receipts.isEmpty())
+            return;
+        for (SentReceipts.Outcome o : receipts.settle(id -> waiting.containsKey(receiptKey(id)), port.wallNow(),
+                port.messageTtlNanos(), stopping))
+            end(o);
+    }
+
+    private void end(SentReceipts.Outcome o) {
+        Intention i = ts.getC().removePendingIntention(receiptKey(o.msgId()));
+        if (i == null)
+            return;
+        if (o.delivered()) {
+            i.peek().removeCurrentStep(); // the .send
+            ts.getC().resumeIntention(i, ReceiptedSend.WAITING_RECEIPT);
+            return;
+        }
+        fail(i, o.msgId(), o.error(), o.text(), o.departed(), "send");
     }
 
     private void fail(RemoteAsks.Failure f) {
         Intention i = ts.getC().removePendingIntention(f.msgId());
-        if (i == null)
-            return;
-        ListTerm annots = JasonException.createBasicErrorAnnots(f.error(), f.text());
-        if (f.departed() != null)
-            annots.concat(ASSyntax.createList(ASSyntax.createStructure("agent_departed", new Atom(f.departed()))));
-        port.log(Level.INFO, "[" + agent + "] ask " + f.msgId() + " failed: " + f.text());
+        if (i != null)
+            fail(i, f.msgId(), f.error(), f.text(), f.departed(), "ask");
+    }
+
+    private void fail(Intention i, String msgId, String error, String text, String departed, String what) {
+        ListTerm annots = JasonException.createBasicErrorAnnots(error, text);
+        if (departed != null)
+            annots.concat(ASSyntax.createList(ASSyntax.createStructure("agent_departed", new Atom(departed))));
+        port.log(Level.INFO, "[" + agent + "] " + what + " " + msgId + " failed: " + text);
         try {
-            ts.generateGoalDeletion(i, annots, ASSyntax.createAtom(f.error()));
+            ts.generateGoalDeletion(i, annots, ASSyntax.createAtom(error));
         } catch (JasonException e) {
-            port.log(Level.SEVERE, "[" + agent + "] could not fail ask " + f.msgId() + ": " + e.getMessage());
+            port.log(Level.SEVERE, "[" + agent + "] could not fail " + what + " " + msgId + ": " + e.getMessage());
         }
     }
 }

@@ -50,10 +50,8 @@ public final class Fleet {
 
     /**
      * @param limited where dropped messages are logged (kind "dropped message"), at most a few lines per period
-     * @param auth signs our messages and presence and checks those of others
-     *             (required by default: configure its keys, or turn it off)
-     * @param limits the bounds on incoming content
-     * @param wall measures silences and stamps log periods
+     * @param auth signs our messages and presence and checks others' (required by default: set keys, or turn it off)
+     * @param limits the bounds on incoming content; wall measures silences and stamps log periods
      */
     public Fleet(Logger logger, FleetListener listener, RateLimitedLog limited, FleetAuth auth, InputLimits limits,
             Clock wall) {
@@ -98,6 +96,13 @@ public final class Fleet {
         presenceTimeoutNanos = t;
     }
 
+    /** How long a process gone silent may come back to what was sent to it (see {@link PresenceTable#setAwayHoldNanos}). */
+    public void setAwayHoldNanos(long t) {
+        synchronized (presence) {
+            presence.setAwayHoldNanos(t);
+        }
+    }
+
     /** The agents this process hosts changed. */
     public void localAgentsChanged(Collection<String> local) {
         PresenceTable.Changes c;
@@ -108,13 +113,9 @@ public final class Fleet {
     }
 
     /**
-     * A presence announcement arrived, with its directory registrations (dfAgents[i] provides
-     * dfServices[i]). Our own announcements are ignored, malformed ones with a log line, and
-     * (with authentication on) those that are not authentic with a rate-limited one: they
-     * change nothing. The registrations of agents it announces replace what it announced before.
-     *
-     * @param signed its authentication fields; signed.incarnation() is the announcing process's
-     * @param publisher who published it, as the channel knows it ("" if unknown)
+     * A presence announcement arrived (signed: its authentication fields; publisher: who published it, "" if
+     * unknown), with its directory registrations (dfAgents[i] provides dfServices[i]), which replace the earlier
+     * ones. Ours, malformed ones (logged) and, with authentication on, unauthentic ones (rate-limited) change nothing.
      */
     public void presenceAnnounced(String mas, String[] names, String[] dfAgents, String[] dfServices, boolean leaving,
             float period, FleetAuth.Signed signed, String publisher) {
@@ -199,7 +200,7 @@ public final class Fleet {
                         + " last announced itself over");
             if (refused == null) {
                 links.remove(mas);
-                c = presence.announced(mas, signed.incarnation(), List.of(), true, wall.nanos());
+                c = presence.connectionEnded(mas, signed.incarnation(), wall.nanos());
             }
         }
         if (refused != null) {

@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
@@ -45,6 +46,7 @@ public final class FleetPort implements FleetListener {
     private final DirectoryFacilitator df;
     private volatile boolean presenceBeliefs = true;
     private volatile long askTimeoutNanos;
+    private volatile long messageTtlNanos = 60_000_000_000L;
     private final FleetNames names;
 
     /**
@@ -165,8 +167,21 @@ public final class FleetPort implements FleetListener {
         return askTimeoutNanos;
     }
 
+    /** How long a remote message may take to be delivered before its send fails (wall clock). */
+    public void setMessageTtlNanos(long t) {
+        messageTtlNanos = t;
+    }
+
+    long messageTtlNanos() {
+        return messageTtlNanos;
+    }
+
     long rosNow() {
         return rosClock.nanos();
+    }
+
+    long wallNow() {
+        return wall.nanos();
     }
 
     void log(java.util.logging.Level level, String line) {
@@ -264,6 +279,10 @@ public final class FleetPort implements FleetListener {
         Fleet.Incoming in = fleet.accept(m, signed, publisher, agents.containsKey(m.sender()));
         if (in == null)
             return 0;
+        if (Receipts.isReceipt(m)) {
+            Optional.ofNullable(agents.get(m.receiver())).ifPresent(sender -> sender.receiptArrived(m));
+            return 0;
+        }
         Map<String, LocalAgArch> hosted = jasonAgents();
         List<String> to = m.receiver().isEmpty() ? new ArrayList<>(hosted.keySet()) : List.of(m.receiver());
         int delivered = 0;
@@ -273,10 +292,13 @@ public final class FleetPort implements FleetListener {
                 fleet.noSuchReceiver(name, in.what());
                 continue;
             }
-            if (!trusted(name, m))
-                continue;
-            la.receiveMsg(Messages.toJason(m.performative(), m.sender(), name, in.content(), m.msgId(), m.inReplyTo()));
-            delivered++;
+            boolean trusted = trusted(name, m);
+            if (trusted) {
+                la.receiveMsg(Messages.toJason(m.performative(), m.sender(), name, in.content(), m.msgId(), m.inReplyTo()));
+                delivered++;
+            }
+            if (Receipts.wanted(m))
+                channel.send(Receipts.of(m, name, fleet.getMasId(), !trusted));
         }
         return delivered;
     }
@@ -288,12 +310,7 @@ public final class FleetPort implements FleetListener {
         AgentMessaging asker = agents.get(receiver);
         if (asker != null && asker.asked(m.sender(), m.inReplyTo()))
             return true;
-        TrustPolicy.Group g = TrustPolicy.Group.of(m.performative());
-        TrustPolicy.Rule rule = trust.rule(receiver, g);
-        limited.warn(REFUSED_MESSAGE, "refused " + InputLimits.abbreviate(m.performative(), 100) + " from " + m.sender()
-                + " (" + InputLimits.abbreviate(m.senderMas(), 100) + ") to " + receiver + ": " + receiver + " takes "
-                + g.key + " from " + (rule.names().isEmpty() ? "no agent of another robot" : "other robots' " + rule
-                        + " only") + " (" + g.option() + " in the .mas2j, or ~trust)", wall.nanos());
+        limited.warn(REFUSED_MESSAGE, trust.refusal(receiver, m.sender(), m.senderMas(), m.performative()), wall.nanos());
         return false;
     }
 

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -72,6 +73,9 @@ public final class PresenceTable {
     }
 
     private final Map<String, Peer> peers = new LinkedHashMap<>();
+    // peers gone silent (or whose connection ended) that may come back with what was sent to them meanwhile
+    private final Map<String, Peer> away = new LinkedHashMap<>();
+    private long awayHoldNanos = 0;
     private Map<String, String> owners = new HashMap<>(); // agent -> masId
     private final Map<String, String> departed = new HashMap<>(); // agent -> why it is gone
     private final Set<String> reportedClashes = new HashSet<>();
@@ -88,6 +92,15 @@ public final class PresenceTable {
     }
 
     /**
+     * How long a peer that went silent (or whose connection ended) stays a place to send
+     * to: its messages wait (in its broker session, or on the link) and their receipts say
+     * whether they got there. 0: not at all (the peer is gone when it is silent).
+     */
+    public void setAwayHoldNanos(long t) {
+        awayHoldNanos = Math.max(0, t);
+    }
+
+    /**
      * A presence announcement.
      *
      * @param incarnation the peer's start time; an older one than known is stale and ignored
@@ -100,6 +113,9 @@ public final class PresenceTable {
             c.stale = true; // a late announcement of an earlier run
             return c;
         }
+        Peer wasAway = away.remove(masId);
+        if (wasAway != null && (leaving || wasAway.incarnation != incarnation))
+            c.lost.addAll(wasAway.agents); // it left for good, or restarted: nothing sent meanwhile will arrive
         if (leaving) {
             if (p != null && (p.incarnation == 0 || p.incarnation == incarnation)) {
                 drop(p, "announced it is leaving", c);
@@ -156,13 +172,33 @@ public final class PresenceTable {
         Set<String> links = new HashSet<>(linkedMas);
         for (Peer p : new ArrayList<>(peers.values())) {
             if (nowNanos - p.heardNanos > timeoutNanos)
-                drop(p, String.format(java.util.Locale.ROOT, "not heard for %.1f s", (nowNanos - p.heardNanos) / 1e9), c);
+                goAway(p, String.format(java.util.Locale.ROOT, "not heard for %.1f s", (nowNanos - p.heardNanos) / 1e9),
+                        nowNanos, c);
             else {
                 p.linked = links.contains(p.masId);
                 p.everLinked |= p.linked;
             }
         }
+        for (Iterator<Peer> it = away.values().iterator(); it.hasNext();) {
+            Peer a = it.next();
+            if (nowNanos - a.heardNanos > awayHoldNanos) {
+                it.remove();
+                c.lost.addAll(a.agents);
+            }
+        }
         recompute(before, c);
+        return c;
+    }
+
+    /** The connection of peer masId (of incarnation) ended without its leaving: it is gone, and may come back. */
+    public Changes connectionEnded(String masId, long incarnation, long nowNanos) {
+        Set<String> before = reachable();
+        Changes c = new Changes();
+        Peer p = peers.get(masId);
+        if (p != null && (p.incarnation == 0 || p.incarnation == incarnation)) {
+            goAway(p, "its connection ended", nowNanos, c);
+            recompute(before, c);
+        }
         return c;
     }
 
@@ -182,8 +218,12 @@ public final class PresenceTable {
      */
     public String sendableMasOf(String agent) {
         String mas = owners.get(agent);
-        if (mas == null)
+        if (mas == null) {
+            for (Peer a : away.values())
+                if (a.agents.contains(agent) && !local.contains(agent))
+                    return a.masId;
             return null;
+        }
         Peer p = peers.get(mas);
         return p != null && (p.linked || !p.everLinked) ? mas : null;
     }
@@ -240,6 +280,21 @@ public final class PresenceTable {
     /** Ids of the peers currently known (for tests and diagnostics). */
     public List<String> peerIds() {
         return new ArrayList<>(peers.keySet());
+    }
+
+    /** Like {@link #drop}, but what was sent to p stays owed for awayHoldNanos: p may come back. */
+    private void goAway(Peer p, String why, long nowNanos, Changes c) {
+        if (awayHoldNanos <= 0 || p.incarnation == 0) {
+            drop(p, why, c);
+            return;
+        }
+        peers.remove(p.masId);
+        c.departed.add(p.masId);
+        c.events.add(p.masId + " left: " + why);
+        for (String a : p.agents)
+            departed.put(a, p.masId + " " + why);
+        p.heardNanos = nowNanos;
+        away.put(p.masId, p);
     }
 
     private void drop(Peer p, String why, Changes c) {

@@ -162,4 +162,14 @@ public final class TrustPolicy {
     public boolean allows(String receiver, String sender, String performative) {
         return rule(receiver, Group.of(performative)).allows(sender);
     }
+
+    /** The log line of a refused message. */
+    public String refusal(String receiver, String sender, String senderMas, String performative) {
+        Group g = Group.of(performative);
+        Rule rule = rule(receiver, g);
+        return "refused " + InputLimits.abbreviate(performative, 100) + " from " + sender + " ("
+                + InputLimits.abbreviate(senderMas, 100) + ") to " + receiver + ": " + receiver + " takes " + g.key
+                + " from " + (rule.names().isEmpty() ? "no agent of another robot" : "other robots' " + rule + " only")
+                + " (" + g.option() + " in the .mas2j, or ~trust)";
+    }
 }

@@ -111,6 +111,7 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
     private final BlockingQueue<Object> queue = new ArrayBlockingQueue<>(QUEUE_CAPACITY);
     private final Semaphore inFlight = new Semaphore(MAX_IN_FLIGHT);
     private final AtomicBoolean announceQueued = new AtomicBoolean();
+    private volatile boolean subscribed; // on the current connection
     private final AtomicBoolean running = new AtomicBoolean();
     private final SecureRandom random = new SecureRandom();
     private final SequenceGate duplicates = new SequenceGate(MAX_SENDERS);
@@ -195,18 +196,22 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
                 .keepAlive(KEEP_ALIVE_SECONDS).willPublish(willPublish).build();
     }
 
-    /** A connection is up: (re)subscribe, and announce over it at once. */
+    /** A connection is up: (re)subscribe; announce once subscribed (before, the broker drops what our inbox gets). */
     private void connected() {
+        subscribed = false;
         logger.info("mqtt: connected to " + settings.url() + " as " + clientId(masId));
         client.subscribeWith().addSubscription().topicFilter(topics.allPresence()).qos(MqttQos.AT_LEAST_ONCE)
                 .noLocal(true).retainHandling(Mqtt5RetainHandling.SEND_IF_SUBSCRIPTION_DOES_NOT_EXIST)
                 .applySubscription().addSubscription().topicFilter(topics.inbox(masId)).qos(MqttQos.AT_LEAST_ONCE)
                 .applySubscription().addSubscription().topicFilter(topics.broadcast()).qos(MqttQos.AT_LEAST_ONCE)
                 .noLocal(true).applySubscription().send().whenComplete((ack, e) -> {
-                    if (e != null)
+                    if (e != null) {
                         logger.warning("mqtt: subscribing failed: " + e.getMessage());
+                        return;
+                    }
+                    subscribed = true;
+                    announceNow();
                 });
-        announceNow();
     }
 
     public boolean isConnected() {
@@ -298,7 +303,7 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
             long now = wall.nanos();
             if (!closing) {
                 port.presenceTickAllLinked();
-                if (now - nextHeartbeat >= 0 && isConnected())
+                if (now - nextHeartbeat >= 0 && isConnected() && subscribed)
                     announceNow();
             }
             limited.tick(now);
