@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""rason_mas refuses to run a project it cannot run as written, with exit status 1 and a
-fatal line naming the cause after Jason's own error; and a rason_mas whose name another
+"""rason_mas refuses to run a project it cannot run as written, or as Jason would run it (another
+infrastructure, a window, a class not on the class path), with exit status 1 and a fatal line
+naming the cause after Jason's own error; and a rason_mas whose name another
 node takes exits 1 saying so, while the new one keeps running."""
 import os
 import subprocess
@@ -18,8 +19,9 @@ from rason_testing import HERE, LogWatcher, stop_mas  # noqa: E402
 BAD = os.path.join(HERE, 'agents', 'bad')
 
 
-def rason_mas(project, name):
-    return subprocess.Popen(['rosrun', 'rason_bridge', 'rason_mas', os.path.join(BAD, project), '__name:=' + name],
+def rason_mas(project, name, *params):
+    return subprocess.Popen(['rosrun', 'rason_bridge', 'rason_mas', os.path.join(BAD, project), '__name:=' + name]
+                            + list(params),
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
 
 
@@ -30,8 +32,8 @@ class TestBadProjects(unittest.TestCase):
         rospy.init_node('test_bad_projects')
         cls.log = LogWatcher()
 
-    def refused(self, project, name):
-        proc = rason_mas(project, name)
+    def refused(self, project, name, *params):
+        proc = rason_mas(project, name, *params)
         out, _ = proc.communicate(timeout=60)
         self.assertEqual(proc.returncode, 1, out)
         fatal = [l for l in out.splitlines() if l.startswith('[FATAL]')]
@@ -45,6 +47,31 @@ class TestBadProjects(unittest.TestCase):
     def test_a_misspelt_agent_class_is_named(self):
         _, fatal = self.refused('misspelt_agent_class.mas2j', 'bad_agent_class')
         self.assertIn("agent 'a': agentClass my.Agnt not found", fatal)
+
+    def test_an_environment_not_on_the_class_path_is_named(self):
+        _, fatal = self.refused('missing_env.mas2j', 'missing_env')
+        self.assertIn("environment town.Bell not found (a typo, or its class is not on the class path: "
+                      "see rason_mas's ~classpath)", fatal)
+
+    def test_an_internal_action_not_on_the_class_path_stops_the_node_after_jasons_error_naming_it(self):
+        out, fatal = self.refused('missing_action.mas2j', 'missing_action')
+        self.assertIn('agent a could not be created', fatal)
+        lines = out.splitlines()
+        named = [i for i, l in enumerate(lines) if 'mylib.twice' in l]
+        self.assertTrue(named, out)
+        self.assertLess(named[0], lines.index(fatal), "Jason's error comes before the fatal line")
+
+    def test_a_classpath_entry_that_does_not_exist_is_a_bad_parameter(self):
+        _, fatal = self.refused('ok.mas2j', 'bad_classpath', '_classpath:=classes')
+        self.assertIn('bad parameter: classpath: classes (%s) does not exist' % os.path.join(BAD, 'classes'), fatal)
+
+    def test_another_infrastructure_is_refused(self):
+        _, fatal = self.refused('jade_infra.mas2j', 'jade_infra')
+        self.assertIn('infrastructure Jade is not supported', fatal)
+
+    def test_a_window_is_refused(self):
+        _, fatal = self.refused('gui_inspector.mas2j', 'gui_inspector')
+        self.assertIn("agent 'a': mindinspector=\"gui(cycle,html)\" is a window, and rason_mas runs headless", fatal)
 
     def test_a_bad_trust_option_is_named(self):
         _, fatal = self.refused('bad_trust.mas2j', 'bad_trust')
