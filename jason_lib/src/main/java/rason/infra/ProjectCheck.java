@@ -111,9 +111,10 @@ public final class ProjectCheck {
         if (t instanceof LiteralImpl l && !(t instanceof VarTerm) && l.getFunctor().contains(".")
                 && ag.getFunction(l.getFunctor(), l.getArity()) == null)
             missing.add(l.getFunctor());
-        if (t instanceof Structure s && !(t instanceof VarTerm) && s.getArity() > 0)
-            for (Term arg : s.getTerms())
-                collectUnloaded(arg, ag, missing);
+        if (t instanceof Structure s && !(t instanceof VarTerm))
+            for (int i = 0; i < s.getArity(); i++) // by index: lists and plans (as terms) keep no term list
+                if (s.getTerm(i) != null)
+                    collectUnloaded(s.getTerm(i), ag, missing);
     }
 
     /**
