@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""rason_mas refuses to run a project it cannot run as written, or as Jason would run it (another
-infrastructure, a window, a class not on the class path), with exit status 1 and a fatal line
+"""rason_mas refuses to run a project it cannot run as written, or as Jason would run it (a class
+not on the class path; another infrastructure and windows: JUnit ProjectCheckTest), with exit status 1 and a fatal line
 naming the cause after Jason's own error; and a rason_mas whose name another
 node takes exits 1 saying so, while the new one keeps running."""
 import os
@@ -70,14 +70,6 @@ class TestBadProjects(unittest.TestCase):
     def test_a_classpath_entry_that_does_not_exist_is_a_bad_parameter(self):
         _, fatal = self.refused('ok.mas2j', 'bad_classpath', '_classpath:=classes')
         self.assertIn('bad parameter: classpath: classes (%s) does not exist' % os.path.join(BAD, 'classes'), fatal)
-
-    def test_another_infrastructure_is_refused(self):
-        _, fatal = self.refused('jade_infra.mas2j', 'jade_infra')
-        self.assertIn('infrastructure Jade is not supported', fatal)
-
-    def test_a_window_is_refused(self):
-        _, fatal = self.refused('gui_inspector.mas2j', 'gui_inspector')
-        self.assertIn("agent 'a': mindinspector=\"gui(cycle,html)\" is a window, and rason_mas runs headless", fatal)
 
     def test_a_bad_trust_option_is_named(self):
         _, fatal = self.refused('bad_trust.mas2j', 'bad_trust')
