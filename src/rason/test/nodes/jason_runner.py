@@ -30,16 +30,17 @@ class Finished(object):
         return '\n'.join(self.output)
 
 
-def jason_command(mas2j):
-    """The command that runs ``mas2j`` under Jason's runner, and the folder to run it in (the project's)."""
-    cmd = ['java', '-Djava.awt.headless=true', '-cp', os.pathsep.join(jason_lib_classpath()),
+def jason_command(mas2j, classpath=()):
+    """The command that runs ``mas2j`` under Jason's runner, and the folder to run it in (the project's);
+    ``classpath``: the project's own classes and jars, after Jason's (as its Gradle build puts them)."""
+    cmd = ['java', '-Djava.awt.headless=true', '-cp', os.pathsep.join(jason_lib_classpath() + list(classpath)),
            'jason.infra.local.RunLocalMAS', os.path.basename(mas2j), '--no-net', '--log-conf', JASON_LOG_CONF]
     return cmd, os.path.dirname(os.path.abspath(mas2j))
 
 
-def run_jason(mas2j, timeout):
+def run_jason(mas2j, timeout, classpath=()):
     """Run ``mas2j`` under Jason's runner in the project's folder until it stops (.stopMAS)."""
-    cmd, cwd = jason_command(mas2j)
+    cmd, cwd = jason_command(mas2j, classpath)
     return _run(cmd, cwd, timeout)
 
 

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""rason_mas refuses to run a project it cannot run as written, with exit status 1 and a
-fatal line naming the cause after Jason's own error; and a rason_mas whose name another
+"""rason_mas refuses to run a project it cannot run as written, or as Jason would run it (a class
+not on the class path; another infrastructure and windows: JUnit ProjectCheckTest), with exit status 1 and a fatal line
+naming the cause after Jason's own error; and a rason_mas whose name another
 node takes exits 1 saying so, while the new one keeps running."""
 import os
 import subprocess
@@ -18,8 +19,9 @@ from rason_testing import HERE, LogWatcher, stop_mas  # noqa: E402
 BAD = os.path.join(HERE, 'agents', 'bad')
 
 
-def rason_mas(project, name):
-    return subprocess.Popen(['rosrun', 'rason_bridge', 'rason_mas', os.path.join(BAD, project), '__name:=' + name],
+def rason_mas(project, name, *params):
+    return subprocess.Popen(['rosrun', 'rason_bridge', 'rason_mas', os.path.join(BAD, project), '__name:=' + name]
+                            + list(params),
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
 
 
@@ -30,9 +32,13 @@ class TestBadProjects(unittest.TestCase):
         rospy.init_node('test_bad_projects')
         cls.log = LogWatcher()
 
-    def refused(self, project, name):
-        proc = rason_mas(project, name)
-        out, _ = proc.communicate(timeout=60)
+    def refused(self, project, name, *params):
+        proc = rason_mas(project, name, *params)
+        try:
+            out, _ = proc.communicate(timeout=60)
+        except subprocess.TimeoutExpired:
+            proc.kill()  # nothing of this test outlives it
+            self.fail('%s still runs after 60 s:\n%s' % (project, proc.communicate()[0]))
         self.assertEqual(proc.returncode, 1, out)
         fatal = [l for l in out.splitlines() if l.startswith('[FATAL]')]
         self.assertEqual(len(fatal), 1, out)
@@ -45,6 +51,25 @@ class TestBadProjects(unittest.TestCase):
     def test_a_misspelt_agent_class_is_named(self):
         _, fatal = self.refused('misspelt_agent_class.mas2j', 'bad_agent_class')
         self.assertIn("agent 'a': agentClass my.Agnt not found", fatal)
+
+    def test_an_environment_not_on_the_class_path_is_named(self):
+        _, fatal = self.refused('missing_env.mas2j', 'missing_env')
+        self.assertIn("environment town.Bell not found (a typo, or its class is not on the class path: "
+                      "see rason_mas's ~classpath)", fatal)
+
+    def test_an_internal_action_not_on_the_class_path_is_named_after_jasons_warning(self):
+        # Jason warns and parses it as an action, which would go to ROS
+        out, fatal = self.refused('missing_action.mas2j', 'missing_action')
+        self.assertIn("agent 'a': internal action mylib.twice not found (a typo, or its class is not on the class "
+                      "path: see rason_mas's ~classpath)", fatal)
+        lines = out.splitlines()
+        warned = [i for i, l in enumerate(lines) if "internal action class for 'mylib.twice(21,X)'" in l]
+        self.assertTrue(warned, out)
+        self.assertLess(warned[0], lines.index(fatal), "Jason's warning comes before the fatal line")
+
+    def test_a_classpath_entry_that_does_not_exist_is_a_bad_parameter(self):
+        _, fatal = self.refused('ok.mas2j', 'bad_classpath', '_classpath:=classes')
+        self.assertIn('bad parameter: classpath: classes (%s) does not exist' % os.path.join(BAD, 'classes'), fatal)
 
     def test_a_bad_trust_option_is_named(self):
         _, fatal = self.refused('bad_trust.mas2j', 'bad_trust')

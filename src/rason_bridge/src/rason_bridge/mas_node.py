@@ -27,13 +27,14 @@ from rason_bridge.exits import exit_for_shutdown
 from rason_bridge.fleet_auth import OFF, no_key_help
 from rason_bridge.held_flusher import HeldFlusher
 from rason_bridge.inbound import Inbound
-from rason_bridge.jvm import JvmError, start_jvm
+from rason_bridge.jvm import JvmError, jason_lib_classpath, start_jvm
 from rason_bridge.log_pump import LogPump
 from rason_bridge.mind_publisher import MindPublisher
 from rason_bridge.outbound_pump import OutboundItems, OutboundPump
 from rason_bridge.params import MQTT, ParamError, read_settings
 from rason_bridge.perception_pump import PerceptionPump
 from rason_bridge.presence_loop import PresenceLoop
+from rason_bridge.project_classpath import project_classpath
 from rason_bridge.ros_fleet import RosFleet
 from rason_bridge.start_barrier import StartBarrier, hold
 
@@ -233,7 +234,6 @@ class RasonMasNode(object):
             self._bridge.actions().fail(action.agent, action.action_id, reason)
 
 
-
 def main(argv=None):
     """``rosrun rason_bridge rason_mas FILE.mas2j``; its ~params: ``src/rason_bridge/PARAMETERS.md``.
     Publishes the hosted agents' names on the ``~agents`` parameter."""
@@ -244,16 +244,18 @@ def main(argv=None):
         return 2
     mas2j = args[1]
     try:
-        start_jvm()
-    except JvmError as e:
-        rospy.logfatal(str(e))
-        return 1
-    try:
-        node = RasonMasNode(read_settings(lambda name, default: rospy.get_param('~' + name, default),
-                                          rospkg.get_ros_home()))
+        settings = read_settings(lambda name, default: rospy.get_param('~' + name, default), rospkg.get_ros_home())
+        classes = project_classpath(mas2j, settings.classpath)
+        start_jvm(jason_lib_classpath() + classes)  # with the project's classes: Jason loads them from its class path
+        node = RasonMasNode(settings)
     except ParamError as e:
         rospy.logfatal('bad parameter: %s', e)
         return 1
+    except JvmError as e:
+        rospy.logfatal(str(e))
+        return 1
+    if classes:
+        rospy.loginfo('the project\'s own classes: %s', os.pathsep.join(classes))
     try:
         names = node.load(mas2j)
     except RuntimeError as e:

@@ -133,6 +133,15 @@ def _optional_path(param, value):
     return os.path.expanduser(value)
 
 
+def _paths(param, value):
+    # a list, or one string as a Java class path is written (os.pathsep between entries)
+    if isinstance(value, str):
+        value = value.split(os.pathsep)
+    if not isinstance(value, list) or not all(isinstance(p, str) for p in value):
+        param.refuse(value)
+    return [p.strip() for p in value if p.strip()]
+
+
 def _mqtt_url(param, value):
     if not isinstance(value, str) or not (value.startswith('tcp://') or value.startswith('ssl://')) \
             or len(value) <= len('tcp://'):
@@ -176,6 +185,11 @@ PARAMS = (
           '`decomposer_lost`', _seconds(0)),
     Param('perception_manager', 'str', 'per_source', '', '`per_source`, `accumulate` or a Java class name',
           'perception strategy of agents whose `.mas2j` names none', _text),
+    Param('classpath', 'list', [], '', 'a list of paths, or one string of paths separated by `%s`' % os.pathsep,
+          'the project\'s own Java classes (internal actions, belief bases, agent classes, environment): '
+          'folders and jars (`lib/*.jar` patterns too), relative to the `.mas2j`\'s folder; '
+          'not given: `build/classes/java/main`, `build/resources/main`, `bin/classes` and `lib/*.jar` '
+          'there, those that exist (see docs/guides/agents.md)', _paths, shown_default='[]'),
     Param('agent_prefix', 'str', '', '', 'a Jason atom start (lower-case letter, then letters, digits, `_`)',
           'prepended to every agent name of the project', _text),
     Param('messages_topic', 'str', '/rason/messages', '', 'a topic name',

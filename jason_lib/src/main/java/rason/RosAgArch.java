@@ -8,6 +8,7 @@ import jason.asSemantics.CircumstanceListener;
 import jason.asSemantics.Message;
 import jason.asSemantics.TransitionSystem;
 import jason.asSyntax.Literal;
+import jason.infra.local.LocalAgArch;
 
 import rason.action.ActionTable;
 import rason.action.ActionText;
@@ -52,6 +53,14 @@ public class RosAgArch extends AgArch {
         messaging = host.fleet().join(name, getTS(), super::sendMsg, this::dataArrived);
     }
 
+    /** Whether the .mas2j names an environment (known once the agent runs: .create_agent sets it after init). */
+    private boolean hasEnvironment() {
+        for (AgArch a = getNextAgArch(); a != null; a = a.getNextAgArch())
+            if (a instanceof LocalAgArch local)
+                return local.getEnvInfraTier() != null;
+        return false;
+    }
+
     @Override
     public void stop() {
         String name = getAgName();
@@ -86,11 +95,16 @@ public class RosAgArch extends AgArch {
 
     // ---- actions ---------------------------------------------------------------------
 
-    /** Registers the action and queues it for the node; the intention waits for its feedback. */
+    /**
+     * Registers the action and queues it for the node; the intention waits for its feedback.
+     * With an environment in the .mas2j, the environment takes it instead.
+     */
     @Override
     public void act(ActionExec action) {
         String stopping = host.actions().shutdownReason();
-        if (stopping != null)
+        if (hasEnvironment())
+            super.act(action); // as under Jason's runner
+        else if (stopping != null)
             complete(action, stopping);
         else {
             actions.start(action, host.rosClock().nanos());

@@ -15,12 +15,10 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 
 import jason.JasonException;
-import jason.architecture.AgArch;
 import jason.asSemantics.Agent;
 import jason.asSyntax.NumberTermImpl;
 import jason.asSyntax.PlanLibrary;
 import jason.asSyntax.Trigger;
-import jason.bb.BeliefBase;
 import jason.asSyntax.directives.DirectiveProcessor;
 import jason.asSyntax.directives.Include;
 import jason.infra.local.LocalAgArch;
@@ -104,6 +102,7 @@ public class RasonLocalMAS extends RunLocalMAS {
         project.setProjectFile(file);
         project.setDirectory(file.getParent());
         project.setupDefault();
+        ProjectCheck.checkProject(project);
         project.getSourcePaths().setRoot(file.getParent());
         project.registerDirectives();
         Include include = (Include) DirectiveProcessor.getDirective("include");
@@ -125,12 +124,12 @@ public class RasonLocalMAS extends RunLocalMAS {
                 ap.addArchClass(MIND_ARCH_CLASS);
             if (!ap.getAgArchClasses().contains(ARCH_CLASS))
                 ap.addArchClass(ARCH_CLASS);
-            checkClasses(ap);
+            ProjectCheck.checkAgent(ap);
             try {
                 // the same check RosAgArch.init makes, but fatal here: a typo must not go unnoticed
-                PerceptionManagers.forAgent(unquote(ap.getOption(PerceptionManagers.MANAGER_OPTION)),
-                        unquote(ap.getOption(PerceptionManagers.RATE_OPTION)),
-                        unquote(ap.getOption(PerceptionManagers.PERCEIVE_OPTION)),
+                PerceptionManagers.forAgent(ProjectCheck.unquote(ap.getOption(PerceptionManagers.MANAGER_OPTION)),
+                        ProjectCheck.unquote(ap.getOption(PerceptionManagers.RATE_OPTION)),
+                        ProjectCheck.unquote(ap.getOption(PerceptionManagers.PERCEIVE_OPTION)),
                         host.perception().defaultManager());
             } catch (IllegalArgumentException e) {
                 throw new JasonException("agent '" + ap.name + "': " + e.getMessage());
@@ -139,33 +138,6 @@ public class RasonLocalMAS extends RunLocalMAS {
             readTrustOptions(ap);
         }
         project.fixAgentsSrc();
-    }
-
-    /**
-     * Jason logs a class it cannot load and runs the agent without it (or not
-     * at all): here a misspelt class stops the node instead.
-     *
-     * @throws JasonException naming the agent, the class and what is wrong with it
-     */
-    private static void checkClasses(AgentParameters ap) throws JasonException {
-        for (String arch : ap.getAgArchClasses())
-            checkClass(ap, "agentArchClass", arch, AgArch.class);
-        if (ap.agClass != null)
-            checkClass(ap, "agentClass", ap.agClass.getClassName(), Agent.class);
-        if (ap.getBBClass() != null)
-            checkClass(ap, "beliefBaseClass", ap.getBBClass().getClassName(), BeliefBase.class);
-    }
-
-    private static void checkClass(AgentParameters ap, String what, String name, Class<?> base) throws JasonException {
-        Class<?> c;
-        try {
-            c = Class.forName(name, false, RasonLocalMAS.class.getClassLoader());
-        } catch (ClassNotFoundException | LinkageError e) {
-            throw new JasonException("agent '" + ap.name + "': " + what + " " + name + " not found (a typo, or its jar"
-                    + " is not on RASON_EXTRA_CLASSPATH)");
-        }
-        if (!base.isAssignableFrom(c))
-            throw new JasonException("agent '" + ap.name + "': " + what + " " + name + " is not a " + base.getName());
     }
 
     /**
@@ -186,6 +158,8 @@ public class RasonLocalMAS extends RunLocalMAS {
         if (!missing.isEmpty())
             throw new JasonException("agent" + (missing.size() > 1 ? "s " : " ") + String.join(", ", missing)
                     + " could not be created (Jason's error is above)");
+        for (LocalAgArch ag : getAgs().values())
+            ProjectCheck.checkInternalActions(ag.getAgName(), ag.getTS().getAg());
         // Jason runs an agent without a file it could not include: here the project does not start
         List<String> includes = projectInclude().failures();
         projectInclude().loaded();
@@ -262,10 +236,6 @@ public class RasonLocalMAS extends RunLocalMAS {
         return names;
     }
 
-    private static String unquote(String s) {
-        return s != null && s.length() >= 2 && s.startsWith("\"") && s.endsWith("\"") ? s.substring(1, s.length() - 1) : s;
-    }
-
     // ---- the directory facilitator: the fleet's (see rason.messaging.FleetDirectory), without a df agent ----
     // Jason's local DF is an agent called df, created on first use: it would be announced as
     // one of this robot's agents and clash with every other robot's df.
@@ -338,6 +308,17 @@ public class RasonLocalMAS extends RunLocalMAS {
             Logger.getLogger("rason.infra").warning(".stopMAS ignored: no rason_mas node runs this MAS");
     }
 
+    /** The project's environment's stop(), as Jason's runner calls it when the MAS ends. */
+    private void stopEnvironment() {
+        if (env == null)
+            return;
+        try {
+            env.stop();
+        } catch (RuntimeException e) {
+            Logger.getLogger("rason.infra").log(Level.WARNING, "the environment's stop() failed", e);
+        }
+    }
+
     /**
      * Stops every agent and waits for their threads.
      *
@@ -363,6 +344,7 @@ public class RasonLocalMAS extends RunLocalMAS {
             t.join(Math.max(1, deadline - Clock.WALL.nanos() / 1_000_000));
             allEnded &= !t.isAlive();
         }
+        stopEnvironment();
         jason.architecture.MindInspectorWeb.stop(); // its port closes with the agents
         return allEnded;
     }
