@@ -21,7 +21,7 @@ APT_PACKAGES := catkin ros-message-generation ros-message-runtime libstd-msgs-de
   python3-actionlib python3-actionlib-msgs ros-actionlib-msgs python3-std-srvs ros-std-srvs \
   python3-move-base-msgs ros-move-base-msgs \
   python3-selenium chromium chromium-driver python3-visualization-msgs ros-visualization-msgs python3-yaml \
-  mosquitto mosquitto-clients nftables iproute2 \
+  mosquitto mosquitto-clients python3-paho-mqtt nftables iproute2 \
   mkdocs mkdocs-material python3-pymdownx
 
 # Environment of every ROS command: the workspace's devel space, logs in build/.

@@ -36,16 +36,28 @@ def test_name_of(result_file):
     return name[:-len('.xml')] if name.endswith('.xml') else name
 
 
+#: What the test-name of a multi-robot .test ends with when it runs with fleet_channel:=mqtt.
+MQTT_SUFFIX = '_mqtt'
+
+
 def launch_tail(results_dir, result_file):
     """The telling lines at the end of the launch output rostest stored for a test."""
     name = os.path.basename(result_file)
     if not name.startswith('rosunit-'):
         return []
-    sibling = os.path.join(os.path.dirname(result_file),
-                           'rostest-test_' + name[len('rosunit-'):])
-    try:
-        out = ET.parse(sibling).getroot().findtext('system-out') or ''
-    except (OSError, ET.ParseError):
+    base = name[len('rosunit-'):]
+    siblings = ['rostest-test_' + base]
+    if base.endswith(MQTT_SUFFIX + '.xml'):
+        # the .test run again with ARGS fleet_channel:=mqtt: catkin names its file by the args, without test_
+        siblings.append('rostest-' + base[:-len(MQTT_SUFFIX + '.xml')] + '__fleet_channel_mqtt.xml')
+    out = None
+    for sibling in siblings:
+        try:
+            out = ET.parse(os.path.join(os.path.dirname(result_file), sibling)).getroot().findtext('system-out') or ''
+            break
+        except (OSError, ET.ParseError):
+            continue
+    if out is None:
         return []
     lines = [l for l in out.splitlines() if TELLING.search(l)]
     return lines[-LOG_LINES:]

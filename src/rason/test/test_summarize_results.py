@@ -49,6 +49,14 @@ def test_failure_prints_message_and_launch_tail(tmp_path, capsys):
     assert out.rstrip().splitlines()[-1] == 'rostest: 1 passed, 1 failed'
 
 
+def test_the_launch_tail_of_an_mqtt_variant_is_found_under_rostests_name_for_it(tmp_path, capsys):
+    folder = str(tmp_path / 'rason')
+    write(folder, 'rosunit-case_x_mqtt.xml', FAILED)
+    write(folder, 'rostest-case_x__fleet_channel_mqtt.xml', LAUNCH)
+    assert summarize_results.main(str(tmp_path), str(tmp_path / 'no_logs')) == 1
+    assert '[helper] Finding faulty' in capsys.readouterr().out
+
+
 def test_failure_prints_what_the_agents_of_its_run_printed_in_time_order(tmp_path, capsys):
     write(str(tmp_path / 'results' / 'rason'), 'rosunit-case_x.xml', FAILED)
     logs = tmp_path / 'log'

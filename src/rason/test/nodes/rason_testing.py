@@ -14,6 +14,8 @@ import rospy
 from rosgraph_msgs.msg import Log
 from rason_msgs.msg import AgentMessage, Event, Perception, Presence
 
+from fleet_wire import fleet_channel, fleet_params
+
 
 def poll(predicate, timeout, interval=0.02):
     """Call ``predicate`` until it returns something true, and return that; None once
@@ -138,6 +140,10 @@ class Robot(object):
     def wait_connected(self, timeout=30.0):
         if not wait_for_subscribers(self._pub, timeout=timeout):
             raise AssertionError('%s does not subscribe to jason/perception' % self.mas)
+        # a robot the .test forgot to name to test/fleet_channel.launch would run on another channel
+        channel = rospy.get_param(self.mas + '/fleet_channel', 'ros')
+        if channel != fleet_channel():
+            raise AssertionError('%s runs on fleet channel %s, this test on %s' % (self.mas, channel, fleet_channel()))
 
     def command(self, text):
         """Publish one command; returns its id (unique in the test process)."""
@@ -170,13 +176,14 @@ def run_refused_node(package, node, ns, name, param, value, timeout=60.0):
 
 
 def start_mas(ns, mas2j, output=None, cwd=None, **params):
-    """Start a rason_mas in namespace ns with ~params; stop it with :func:`stop_mas` or SIGKILL.
+    """Start a rason_mas in namespace ns with ~params (and those of this test's fleet channel,
+    :func:`fleet_wire.fleet_params`); stop it with :func:`stop_mas` or SIGKILL.
 
     :param output: where its stdout and stderr go (e.g. ``subprocess.PIPE``); None: this process's
     :param cwd: its working directory (None: this process's)
     """
     args = ['rosrun', 'rason_bridge', 'rason_mas', mas2j, '__ns:=/' + ns]
-    args += ['_%s:=%s' % (k, v) for k, v in params.items()]
+    args += ['_%s:=%s' % (k, v) for k, v in dict(fleet_params(), **params).items()]
     # rosrun execs the node, so the pid is the node's own (SIGKILL hits the JVM too)
     return subprocess.Popen(args, stdout=output, stderr=subprocess.STDOUT if output else None,
                             universal_newlines=True, cwd=cwd)

@@ -1,9 +1,12 @@
 #!/usr/bin/python3
-"""Fleet authentication between rason_mas processes: a node without the fleet key cannot make
-another robot's agent believe, do, stop or reveal anything, nor hide a robot or add an agent with a
-forged presence; a genuine message played again is dropped; a robot with another key is refused;
-a missing key stops the node with a clear error; the opt-out is announced. Each drop is a warning
-naming the claimed sender.
+"""Fleet authentication between rason_mas processes, on the test's fleet channel (ROS topics, or
+MQTT with fleet_channel:=mqtt): a node without the fleet key (a plain rospy publisher, or a broker
+client) cannot make another robot's agent believe, do, stop or reveal anything, by a message to it
+or a broadcast, nor hide a robot or add an agent with a forged presence (or, over MQTT, a forged
+last will); a genuine message or presence played again, and an altered copy, are dropped; a robot
+with another key is refused; a missing key stops the node with a clear error; the opt-out is
+announced. Each drop is a warning naming the claimed sender; over MQTT, payloads that cannot be
+read are logged at most 10 to the 10 s.
 
 Negative checks use markers: the receiver's drop line proves the forged message was refused before
 delivery, and a genuine message sent afterwards must be handled before the test checks that the
@@ -21,8 +24,8 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
-from rason_testing import (MULTI_AGENTS, LogWatcher, Robot, run, start_mas, stop_mas,  # noqa: E402
-                           wait_for, wait_for_subscribers)
+from fleet_wire import MQTT, Will, encode_message, encode_presence, fleet_tap, inbox_topic, presence_topic  # noqa: E402
+from rason_testing import MULTI_AGENTS, LogWatcher, Robot, run, start_mas, stop_mas, wait_for  # noqa: E402
 from rason_bridge.fleet_key import generate_key, write_key  # noqa: E402
 from rason_msgs.msg import AgentMessage, Presence  # noqa: E402
 
@@ -40,17 +43,14 @@ class TestFleetAuth(unittest.TestCase):
         cls.r1 = Robot('robot1')
         cls.r2 = Robot('robot2')
         cls._lock = threading.Lock()
-        cls.heard = []          # every AgentMessage on /rason/messages
         cls.incarnations = {}   # mas_id -> incarnation, from the presence heard
-        rospy.Subscriber('/rason/messages', AgentMessage, cls._on_message, queue_size=None)
-        rospy.Subscriber('/rason/presence', Presence, cls._on_presence, queue_size=100)
-        # what the node without the key publishes: plain messages, no mac
-        cls.messages = rospy.Publisher('/rason/messages', AgentMessage, queue_size=100)
-        cls.presence = rospy.Publisher('/rason/presence', Presence, queue_size=100)
+        cls.presences = {}      # mas_id -> the last presence heard from it (not leaving)
+        # the node without the key: publishes plain messages, no mac; hears every message
+        cls.tap = fleet_tap(on_presence=cls._on_presence)
+        cls.mqtt = cls.tap.channel == MQTT
         cls.r1.wait_connected()
         cls.r2.wait_connected()
-        assert wait_for_subscribers(cls.messages, 2, timeout=30)
-        assert wait_for_subscribers(cls.presence, 2, timeout=30)
+        assert cls.tap.wait_ready(2), 'the robots do not hear this node on the fleet channel'
         assert cls.log.wait_ready()
         assert cls.log.wait_for(r'^\[alice\] present bob$', timeout=30)
         assert cls.log.wait_for(r'^\[bob\] present alice$', timeout=30)
@@ -61,16 +61,17 @@ class TestFleetAuth(unittest.TestCase):
     def tearDownClass(cls):
         for p in cls.procs:
             stop_mas(p)
-
-    @classmethod
-    def _on_message(cls, msg):
-        with cls._lock:
-            cls.heard.append(msg)
+        if cls.mqtt:
+            cls.tap.close()
 
     @classmethod
     def _on_presence(cls, msg):
+        if not msg.mac:
+            return  # what this node forged, heard back
         with cls._lock:
             cls.incarnations[msg.mas_id] = msg.incarnation
+            if not msg.leaving:
+                cls.presences[msg.mas_id] = msg
 
     # ---- helpers -----------------------------------------------------------------------
 
@@ -84,7 +85,7 @@ class TestFleetAuth(unittest.TestCase):
         return AgentMessage(**values)
 
     def incarnation(self, mas):
-        """The incarnation mas announces (heard on /rason/presence)."""
+        """The incarnation mas announces (heard on the fleet channel)."""
         def heard():
             with self._lock:
                 return self.incarnations.get(mas)
@@ -99,23 +100,41 @@ class TestFleetAuth(unittest.TestCase):
         return found[-1][3]
 
     def captured(self, content, sender, timeout=10.0):
-        """The genuine AgentMessage with this content from sender, heard on /rason/messages."""
+        """The genuine AgentMessage with this content from sender, heard on the fleet channel."""
         def heard():
-            with self._lock:
-                return next((m for m in self.heard if m.content == content and m.sender == sender and m.mac), None)
-        return wait_for(heard, timeout, '%s from %s on /rason/messages' % (content, sender))
+            return next(iter(self.tap.heard(lambda m: m.content == content and m.sender == sender and m.mac)), None)
+        return wait_for(heard, timeout, '%s from %s on the fleet channel' % (content, sender))
+
+    def captured_payload(self, msg):
+        """Over MQTT: the (topic, payload) that carried the genuine msg, as it arrived."""
+        return self.tap.captured(lambda m: isinstance(m, AgentMessage) and m.sender_mas == msg.sender_mas
+                                 and m.sequence == msg.sequence and m.incarnation == msg.incarnation)[0]
+
+    def publish(self, *messages):
+        for m in messages:
+            self.tap.publish_message(m)
+
+    def play_again(self, genuine):
+        """Publish a copy of a genuine message as it was heard (over MQTT: its very bytes, on its topic)."""
+        if self.mqtt:
+            self.tap.publish_raw(*self.captured_payload(genuine))
+        else:
+            self.publish(genuine)
 
     def expect(self, line, timeout=10.0, node=None):
         found = self.log.wait_for(line, timeout=timeout, node=node)
         self.assertTrue(found, 'never saw %r' % line)
         return found
 
+    def skip_because(self, reason):
+        print('skipped on the %s channel: %s' % (self.tap.channel, reason))
+        self.skipTest(reason)
+
     def absent(self, line):
         self.assertFalse(self.log.lines(line), 'saw %r' % line)
 
     def replies_to(self, msg_id):
-        with self._lock:
-            return [m for m in self.heard if m.in_reply_to == msg_id]
+        return self.tap.heard(lambda m: m.in_reply_to == msg_id)
 
     def start(self, ns, name, output=None, **params):
         proc = start_mas(ns, os.path.join(MULTI_AGENTS, name + '.mas2j'), output=output, **params)
@@ -125,7 +144,7 @@ class TestFleetAuth(unittest.TestCase):
     # ---- believe, do, stop, reveal -------------------------------------------------------
 
     def test_a_forged_tell_is_not_believed(self):
-        line = self.dropped(lambda: self.messages.publish(self.forged('tell', 'hello(666)')),
+        line = self.dropped(lambda: self.publish(self.forged('tell', 'hello(666)')),
                             r'^dropped message tell from bob \(/robot2/rason_mas\) to alice: unauthenticated',
                             ALICE_MAS)
         self.assertIn('no mac', line)
@@ -134,7 +153,7 @@ class TestFleetAuth(unittest.TestCase):
         self.absent(r'^\[alice\] told hello\(666\)')
 
     def test_a_forged_achieve_is_not_done(self):
-        self.dropped(lambda: self.messages.publish(self.forged('achieve', 'greet(forged)')),
+        self.dropped(lambda: self.publish(self.forged('achieve', 'greet(forged)')),
                      r'^dropped message achieve from bob \(/robot2/rason_mas\) to alice: unauthenticated', ALICE_MAS)
         run(self.log, self.r2, 'bob', 'send(alice, achieve, greet(marker2))', 'sent')
         self.expect(r'^\[alice\] asked to greet marker2 by bob$')
@@ -142,8 +161,8 @@ class TestFleetAuth(unittest.TestCase):
 
     def test_a_forged_plan_is_neither_learned_nor_run(self):
         def publish():
-            self.messages.publish(self.forged('tellHow', '+!evil <- .print("evil ran").', sender='alice', to='bob'))
-            self.messages.publish(self.forged('achieve', 'evil', sender='alice', to='bob'))
+            self.publish(self.forged('tellHow', '+!evil <- .print("evil ran").', sender='alice', to='bob'))
+            self.publish(self.forged('achieve', 'evil', sender='alice', to='bob'))
         self.dropped(publish, r'^dropped message (tellHow|achieve) from alice \(/robot1/rason_mas\) to bob: '
                      r'unauthenticated', BOB_MAS, count=2)
         run(self.log, self.r1, 'alice', 'send(bob, achieve, greet(marker3))', 'sent')
@@ -156,9 +175,9 @@ class TestFleetAuth(unittest.TestCase):
         self.expect(r'^\[bob\] lingering for alice$')
 
         def publish():
-            self.messages.publish(self.forged('unachieve', 'linger', sender='alice', to='bob'))
-            self.messages.publish(self.forged('tellHow', '+!halt <- .stopMAS.', sender='alice', to='bob'))
-            self.messages.publish(self.forged('achieve', 'halt', sender='alice', to='bob'))
+            self.publish(self.forged('unachieve', 'linger', sender='alice', to='bob'))
+            self.publish(self.forged('tellHow', '+!halt <- .stopMAS.', sender='alice', to='bob'))
+            self.publish(self.forged('achieve', 'halt', sender='alice', to='bob'))
         self.dropped(publish, r'^dropped message (unachieve|tellHow|achieve) from alice \(/robot1/rason_mas\) to bob: '
                      r'unauthenticated', BOB_MAS, count=3)
         # bob's process still runs and bob still lingers: the goal was not dropped
@@ -168,16 +187,29 @@ class TestFleetAuth(unittest.TestCase):
 
     def test_a_forged_ask_reveals_nothing(self):
         def publish():
-            self.messages.publish(self.forged('askOne', 'secret(X)', msg_id='forged_ask'))
-            self.messages.publish(self.forged('askAll', 'secret(X)', msg_id='forged_ask_all'))
-            self.messages.publish(self.forged('askHow', '+!greet(X)', msg_id='forged_how'))
+            self.publish(self.forged('askOne', 'secret(X)', msg_id='forged_ask'))
+            self.publish(self.forged('askAll', 'secret(X)', msg_id='forged_ask_all'))
+            self.publish(self.forged('askHow', '+!greet(X)', msg_id='forged_how'))
         self.dropped(publish, r'^dropped message ask(One|All|How) from bob \(/robot2/rason_mas\) to alice: '
                      r'unauthenticated', ALICE_MAS, count=3)
-        # the genuine ask is answered (alice's answers go out on /rason/messages, which this test hears)
+        # the genuine ask is answered (alice's answers go out on the fleet channel, which this test hears)
         self.assertEqual(run(self.log, self.r2, 'bob', 'ask(alice, askOne, secret)', r'answer .*'),
                          'answer secret(alice_secret)[source(alice)]')
         for msg_id in ('forged_ask', 'forged_ask_all', 'forged_how'):
             self.assertEqual(self.replies_to(msg_id), [], 'alice answered %s' % msg_id)
+
+    def test_a_forged_broadcast_is_believed_by_nobody(self):
+        forged = AgentMessage(sender_mas='/robot9/rason_mas', sender='mallory', performative='tell',
+                              content='hello(606)', incarnation=time.time_ns(), sequence=1, stamp=time.time_ns())
+        pattern = r'^dropped message tell from mallory \(/robot9/rason_mas\) to everyone: unauthenticated'
+        before = len(self.log.lines(pattern, node=BOB_MAS))
+        self.dropped(lambda: self.publish(forged), pattern, ALICE_MAS)
+        self.assertTrue(self.log.wait_for(pattern, count=before + 1, node=BOB_MAS), 'bob never dropped the broadcast')
+        run(self.log, self.r1, 'alice', 'broadcast(tell, hello(607))', 'broadcast')
+        self.expect(r'^\[bob\] told hello\(607\) by alice$')
+        run(self.log, self.r2, 'bob', 'broadcast(tell, hello(608))', 'broadcast')
+        self.expect(r'^\[alice\] told hello\(608\) by bob$')
+        self.absent(r'told hello\(606\)')
 
     # ---- replay and tampering --------------------------------------------------------------
 
@@ -185,7 +217,7 @@ class TestFleetAuth(unittest.TestCase):
         run(self.log, self.r2, 'bob', 'send(alice, achieve, greet(replay6))', 'sent')
         self.expect(r'^\[alice\] asked to greet replay6 by bob$')
         genuine = self.captured('greet(replay6)', 'bob')
-        line = self.dropped(lambda: self.messages.publish(genuine),
+        line = self.dropped(lambda: self.play_again(genuine),
                             r'^dropped message achieve from bob \(/robot2/rason_mas\) to alice: replayed', ALICE_MAS)
         self.assertIn('sequence %d already seen' % genuine.sequence, line)
         run(self.log, self.r2, 'bob', 'send(alice, achieve, greet(marker6))', 'sent')
@@ -200,15 +232,21 @@ class TestFleetAuth(unittest.TestCase):
         tampered.content = 'hello(777)'
         tampered.sequence = genuine.sequence + 1000  # as if it were new
         guessed = self.forged('tell', 'hello(778)', key_id=genuine.key_id, mac=os.urandom(32))
+        altered = []
+        if self.mqtt:  # and the payload as it was heard with one byte of its content changed
+            topic, payload = self.captured_payload(genuine)
+            self.assertEqual(payload.count(b'hello(7)'), 1)
+            altered.append((topic, payload.replace(b'hello(7)', b'hello(5)')))
 
         def publish():
-            self.messages.publish(tampered)
-            self.messages.publish(guessed)
+            self.publish(tampered, guessed)
+            for topic, payload in altered:
+                self.tap.publish_raw(topic, payload)
         self.dropped(publish, r'^dropped message tell from bob \(/robot2/rason_mas\) to alice: bad mac', ALICE_MAS,
-                     count=2)
+                     count=2 + len(altered))
         run(self.log, self.r2, 'bob', 'send(alice, tell, hello(779))', 'sent')
         self.expect(r'^\[alice\] told hello\(779\) by bob$')
-        self.absent(r'^\[alice\] told hello\(77[78]\)')
+        self.absent(r'^\[alice\] told hello\((77[78]|5)\)')
 
     # ---- presence ----------------------------------------------------------------------------
 
@@ -217,12 +255,12 @@ class TestFleetAuth(unittest.TestCase):
 
         def publish():
             # a higher incarnation: as if bob's robot had restarted with eve instead
-            self.presence.publish(Presence(mas_id=BOB_MAS, incarnation=2 ** 63 - 1, agents=['eve'], period=0.5,
+            self.tap.publish_presence(Presence(mas_id=BOB_MAS, incarnation=2 ** 63 - 1, agents=['eve'], period=0.5,
                                            sequence=2 ** 40, stamp=now))
             # bob's robot leaving, and a robot that does not exist
-            self.presence.publish(Presence(mas_id=BOB_MAS, incarnation=self.incarnation(BOB_MAS), agents=['bob'],
+            self.tap.publish_presence(Presence(mas_id=BOB_MAS, incarnation=self.incarnation(BOB_MAS), agents=['bob'],
                                            period=0.5, leaving=True, sequence=2 ** 40 + 1, stamp=now))
-            self.presence.publish(Presence(mas_id='/robot9/rason_mas', incarnation=now, agents=['mallory'],
+            self.tap.publish_presence(Presence(mas_id='/robot9/rason_mas', incarnation=now, agents=['mallory'],
                                            period=0.5, sequence=1, stamp=now))
         self.dropped(publish, r'^dropped presence of (/robot2|/robot9)/rason_mas.*: unauthenticated', ALICE_MAS, count=3)
         lines = [line[3] for line in self.log.lines(r'^dropped presence of', node=ALICE_MAS)]
@@ -237,6 +275,58 @@ class TestFleetAuth(unittest.TestCase):
         self.expect(r'^\[bob\] told hello\(8\) by alice$')
         self.absent(r'^\[alice\] (absent bob|present (eve|mallory))$')
         self.absent(r'presence: .*(robot9|restarted|eve)')
+
+    def test_a_genuine_presence_played_again_is_dropped(self):
+        self.incarnation(BOB_MAS)
+        with self._lock:
+            genuine = self.presences[BOB_MAS]
+        pattern = r'^dropped presence of /robot2/rason_mas announcing \[bob\]: replayed'
+        if self.mqtt:
+            # its very bytes, on bob's presence topic and on another robot's
+            _, payload = self.tap.captured(lambda p: isinstance(p, Presence) and p.mas_id == BOB_MAS
+                                           and p.sequence == genuine.sequence)[0]
+            copies = [(presence_topic(BOB_MAS), payload), (presence_topic('/robot9/rason_mas'), payload)]
+            self.dropped(lambda: [self.tap.publish_raw(t, p) for t, p in copies], pattern, ALICE_MAS, count=2)
+        else:
+            self.dropped(lambda: self.tap.publish_presence(genuine), pattern, ALICE_MAS)
+        self.assertEqual(run(self.log, self.r1, 'alice', 'names', r'names .*'), 'names [alice,bob]')
+        self.absent(r'presence: .*robot9')
+
+    def test_a_forged_last_will_does_not_make_a_robot_look_gone(self):
+        if not self.mqtt:
+            self.skip_because('a last will is MQTT\'s: over ROS topics a robot is gone when its link drops')
+        will = Will(BOB_MAS, '00' * 16, incarnation=self.incarnation(BOB_MAS), stamp=time.time_ns())
+        self.dropped(lambda: self.tap.publish_will(will),
+                     r'^dropped last will of /robot2/rason_mas: unauthenticated', ALICE_MAS)
+        self.assertEqual(run(self.log, self.r1, 'alice', 'present', r'present .*'), 'present [alice,bob]')
+        self.absent(r'^\[alice\] absent bob$')
+        self.absent(r'presence: the connection of /robot2/rason_mas ended')
+
+    def test_what_cannot_be_read_is_dropped_with_at_most_ten_lines(self):
+        if not self.mqtt:
+            self.skip_because('ROS topics carry typed rason_msgs: there is no payload to garble')
+        inbox = inbox_topic(ALICE_MAS)
+        forged = encode_message(self.forged('tell', 'hello(609)'))
+        odd = [(inbox, b'\x07nonsense'), (inbox, forged[:20]), (presence_topic(BOB_MAS), forged),
+               (inbox, encode_presence(Presence(mas_id=BOB_MAS, agents=['bob'], period=0.5)))]
+        flood = odd + [(inbox, b'\x00%d' % i) for i in range(21)]
+        pattern = r'^mqtt: dropped (what arrived on|a \w+ on) rason/'
+        self.assertEqual(self.log.lines(pattern, node=ALICE_MAS), [])
+        for topic, payload in flood:
+            self.tap.publish_raw(topic, payload)
+        self.expect(pattern, node=ALICE_MAS)
+        # bob's tell comes after the flood in alice's queue at the broker
+        run(self.log, self.r2, 'bob', 'send(alice, tell, hello(610))', 'sent')
+        self.expect(r'^\[alice\] told hello\(610\) by bob$')
+        lines = [l[3] for l in self.log.wait_for(pattern, count=10, node=ALICE_MAS)]
+        for expected in (r'on rason/inbox/robot1/rason_mas: not a version 1 payload$',
+                         r'on rason/inbox/robot1/rason_mas: a field of 17 bytes, with 14 left$',
+                         r'^mqtt: dropped a Message on rason/presence/robot2/rason_mas$',
+                         r'^mqtt: dropped a Presence on rason/inbox/robot1/rason_mas$'):
+            self.assertTrue(any(re.search(expected, l) for l in lines), (expected, lines))
+        self.log.wait_quiet(0.5, pattern)
+        self.assertEqual(len(self.log.lines(pattern, node=ALICE_MAS)), 10, '25 payloads, at most 10 lines')
+        self.absent(r'told hello\(609\)')
 
     # ---- keys and the opt-out ------------------------------------------------------------------
 

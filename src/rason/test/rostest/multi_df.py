@@ -16,8 +16,8 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
+from fleet_wire import fleet_tap  # noqa: E402
 from rason_testing import HERE, LogWatcher, Robot, poll, run, start_mas, stop_mas  # noqa: E402
-from rason_msgs.msg import Presence  # noqa: E402
 
 DF_AGENTS = os.path.join(HERE, 'agents', 'df')
 TIMEOUT = 1.5          # presence_timeout of every process in this test
@@ -40,7 +40,8 @@ class TestDirectoryAcrossRobots(unittest.TestCase):
                 'the dispatcher never heard of %s' % courier
         cls.late = None
         cls.announced = {}  # mas_id -> the agents of its latest presence
-        rospy.Subscriber('/rason/presence', Presence, cls._on_presence)
+        cls.tap = fleet_tap(on_presence=cls._on_presence)  # hears the announcements on the fleet channel
+        assert cls.tap.wait_ready(3), 'not connected to the fleet channel'
 
     @classmethod
     def _on_presence(cls, msg):

@@ -14,8 +14,8 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
+from fleet_wire import fleet_tap  # noqa: E402
 from rason_testing import MULTI_AGENTS, LogWatcher, Robot, run, start_mas, stop_mas, wait_for  # noqa: E402
-from rason_msgs.msg import Presence  # noqa: E402
 
 TIMEOUT = 1.5          # presence_timeout of every process in this test
 PARAMS = dict(presence_period=0.3, presence_timeout=TIMEOUT)
@@ -35,7 +35,8 @@ class TestPresence(unittest.TestCase):
         assert cls.log.wait_ready()
         cls.heard = {}  # mas_id -> monotonic time of its first announcement
         cls._lock = threading.Lock()
-        rospy.Subscriber('/rason/presence', Presence, cls._on_presence)
+        cls.tap = fleet_tap(on_presence=cls._on_presence)  # hears the announcements on the fleet channel
+        assert cls.tap.wait_ready(1), 'not connected to the fleet channel'
         cls.procs = {}  # namespace -> the last rason_mas this test started there
 
     @classmethod

@@ -13,8 +13,9 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
-from rason_testing import FleetSigner, LogWatcher, Robot, run, wait_for, wait_for_subscribers  # noqa: E402
-from rason_msgs.msg import AgentMessage, Presence  # noqa: E402
+from fleet_wire import fleet_tap  # noqa: E402
+from rason_testing import FleetSigner, LogWatcher, Robot, run, wait_for  # noqa: E402
+from rason_msgs.msg import Presence  # noqa: E402
 
 
 class TestTwoProcesses(unittest.TestCase):
@@ -100,42 +101,39 @@ class TestTwoProcesses(unittest.TestCase):
 
     def test_bad_input_is_dropped_with_a_log_line_and_everything_keeps_working(self):
         # signed with the fleet key by this node, so the checks after authentication are reached
-        # (unsigned and forged input: the fleet_auth rostest)
-        if rospy.get_param('/robot1/rason_mas/fleet_channel', 'ros') == 'mqtt':
-            self.skipTest('the fleet channel is MQTT: nothing listens on the ROS fleet topics'
-                          ' (MqttFleetTest covers forged and malformed MQTT input)')
+        # (unsigned and forged input: the fleet_auth rostest); put on the test's fleet channel
+        # (over MQTT by a broker client of this node, its presence on its own presence topic)
         signer = FleetSigner()
         me = re.escape(signer.mas_id)
-        pub = rospy.Publisher('/rason/messages', AgentMessage, queue_size=10)
-        ppub = rospy.Publisher('/rason/presence', Presence, queue_size=10)
-        self.assertTrue(wait_for_subscribers(pub, 2) and wait_for_subscribers(ppub, 2),
-                        'the two robots do not subscribe to /rason/messages and /rason/presence')
+        tap = fleet_tap()
+        self.addCleanup(getattr(tap, 'close', lambda: None))
+        self.assertTrue(tap.wait_ready(2), 'the two robots do not hear this node on the fleet channel')
         # mallory becomes present below: it leaves again, so that the other tests find two robots only
-        self.addCleanup(self.leave, signer, ppub)
+        self.addCleanup(self.leave, signer, tap)
         base = dict(sender='mallory', receiver_mas='/robot1/rason_mas', receiver='alice', performative='tell',
                     msg_id='x1')
-        pub.publish(signer.message(content='hello(', **base))
+        tap.publish_message(signer.message(content='hello(', **base))
         self.expect(r"dropped message tell from mallory \(%s\) to alice: content 'hello\(' is not a Jason term" % me)
-        pub.publish(signer.message(content='hello(9)', **dict(base, receiver='zed')))
+        tap.publish_message(signer.message(content='hello(9)', **dict(base, receiver='zed')))
         self.expect(r"dropped message tell from mallory \(%s\) to zed: no agent 'zed' here" % me)
-        pub.publish(signer.message(content='hello(9)', **dict(base, sender='Mallory')))
+        tap.publish_message(signer.message(content='hello(9)', **dict(base, sender='Mallory')))
         self.expect(r'dropped message tell from Mallory .*the sender a Jason atom')
-        pub.publish(signer.message(content='hello(9)', **dict(base, performative='')))
+        tap.publish_message(signer.message(content='hello(9)', **dict(base, performative='')))
         self.expect(r"dropped message  from mallory .*performative '' is not a Jason atom")
         # a well-formed message from a process not announced yet is delivered (and counts as presence)
-        pub.publish(signer.message(content='hello(9)', **base))
+        tap.publish_message(signer.message(content='hello(9)', **base))
         self.expect(r'^\[alice\] told hello\(9\) by mallory$')
-        ppub.publish(Presence(mas_id='', agents=['x'], period=0.5))
+        tap.publish_presence(Presence(mas_id='', agents=['x'], period=0.5), on_topic_of=signer.mas_id)
         self.expect(r'ignored a presence announcement without mas_id')
-        ppub.publish(signer.presence(['Bad Name', 'mallory']))
+        tap.publish_presence(signer.presence(['Bad Name', 'mallory']))
         self.expect(r"ignored agent name 'Bad Name' announced by %s" % me)
         # and the real agents still talk
         run(self.log, self.r1, 'alice', 'send(bob, tell, hello(10))', 'sent')
         self.expect(r'^\[bob\] told hello\(10\) by alice$')
 
-    def leave(self, signer, ppub):
+    def leave(self, signer, tap):
         """mallory's process announces it is leaving; returns once both robots name alice and bob only."""
-        ppub.publish(signer.presence(['mallory'], leaving=True))
+        tap.publish_presence(signer.presence(['mallory'], leaving=True))
         for robot, agent in ((self.r1, 'alice'), (self.r2, 'bob')):
             wait_for(lambda: run(self.log, robot, agent, 'present', r'present .*') == 'present [alice,bob]'
                      and run(self.log, robot, agent, 'names', r'names .*') == 'names [alice,bob]',
