@@ -4,7 +4,7 @@ Two robots, r1 and r2, each in a network namespace with its own ROS master and i
 rason_mas (agents/hosts/r1.mas2j, r2.mas2j: a1..a5 and b1..b5, a_i exchanging with b_i),
 meet over MQTT through a mosquitto on a third host, each robot's connection going through a
 relay that adds 100 ms each way; each robot's link loses frames in each direction. One run
-(the module fixture, ~4 min) plays three phases, each checked by a test of its own:
+(the module fixture, 2.5 to 3.5 min) plays three phases, each checked by a test of its own:
 
   (a) 20 % loss: every agent sends its peer a burst of 100 numbered messages (tell, achieve,
       askOne in turn), 1,000 in all: each reaches Jason exactly once, in order per pair, and
