@@ -98,9 +98,7 @@ public final class Fleet {
 
     /** How long a process gone silent may come back to what was sent to it (see {@link PresenceTable#setAwayHoldNanos}). */
     public void setAwayHoldNanos(long t) {
-        synchronized (presence) {
-            presence.setAwayHoldNanos(t);
-        }
+        synchronized (presence) { presence.setAwayHoldNanos(t); }
     }
 
     /** The agents this process hosts changed. */
