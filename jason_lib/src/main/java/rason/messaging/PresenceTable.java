@@ -190,17 +190,13 @@ public final class PresenceTable {
         return c;
     }
 
-    /**
-     * The connection of peer masId (of incarnation) ended without its leaving (its last will). A peer
-     * still heard from is gone for good (its process died: what it owes is lost); one that was silent
-     * already stays away, since a link that stalls past the broker's keep-alive ends its connection too.
-     */
+    /** The connection of peer masId (of incarnation) ended without its leaving: it is gone, and may come back. */
     public Changes connectionEnded(String masId, long incarnation, long nowNanos) {
         Set<String> before = reachable();
         Changes c = new Changes();
         Peer p = peers.get(masId);
         if (p != null && (p.incarnation == 0 || p.incarnation == incarnation)) {
-            drop(p, "its connection ended", c);
+            goAway(p, "its connection ended", nowNanos, c);
             recompute(before, c);
         }
         return c;
