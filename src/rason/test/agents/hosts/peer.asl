@@ -2,8 +2,9 @@
 
    It exchanges numbered messages with peer(P), its counterpart on the other robot, and prints
    every step, so the test checks delivery, order and presence from the output alone.
-   Message N is a tell when N mod 3 is 0, an achieve when 1, an askOne when 2. A sender sends
-   one message at a time, so the order of its numbers is the order of its sends.
+   Message N is a tell when N mod 3 is 0, an achieve when 1, an askOne when 2. In the burst a
+   sender sends one message at a time, in the stream one every period, so the order of its
+   numbers is the order of its sends.
    Times are the wall clock in ms (system.time): every host shares the machine's clock. */
 
 // presence of the peer; its first arrival starts the exchange
@@ -20,7 +21,9 @@
       !stream(Count + 1).
 
 +!stream(N) : stopped <- .print("stream ended ", N - 1).
-+!stream(N) : stream_period(Ms) <- !send_one(N); .wait(Ms); !stream(N + 1).
+// each in an intention of its own: a send waits for its receipt (a partition holds it until the
+// heal), and the stream goes on meanwhile; the period keeps the sends in the order of their numbers
++!stream(N) : stream_period(Ms) <- !!send_one(N); .wait(Ms); !stream(N + 1).
 
 +stop <- +stopped.
 
