@@ -239,3 +239,17 @@ class FleetSigner(object):
                         df_agents=list(df_agents), df_services=list(df_services), period=period,
                         leaving=leaving, sequence=int(s.sequence()), stamp=int(s.stamp()), key_id=str(s.keyId()),
                         mac=bytes(s.mac()))
+
+
+def run_launch(*args, timeout=60.0):
+    """(exit status, output) of ``rosrun rason run_launch rason ARGS`` (a launch file and its
+    NAME:=VALUE args); one still running after timeout is interrupted as roslaunch's Ctrl-C would."""
+    launch = subprocess.Popen(['rosrun', 'rason', 'run_launch', 'rason'] + list(args),
+                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+    try:
+        output, _ = launch.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        launch.send_signal(signal.SIGINT)    # roslaunch's own shutdown: no node left behind
+        output, _ = launch.communicate(timeout=60)
+        output += '\n(the launch did not end within %.0f s: interrupted)' % timeout
+    return launch.returncode, output

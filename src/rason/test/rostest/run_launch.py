@@ -3,27 +3,17 @@
 and without roslaunch's "REQUIRED process has died!" banner; one whose required node fails
 ends with a non-zero status that names the node. demo.launch is the launch: the example agent
 on the scripted robot, then the same with a .mas2j that does not exist."""
-import signal
-import subprocess
+import os
+import sys
 import unittest
 
 import rospy
 import rostest
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
+from rason_testing import run_launch  # noqa: E402
+
 BANNER = 'REQUIRED process'
-
-
-def run_launch(*args, timeout=60.0):
-    """(exit status, output) of ``rosrun rason run_launch rason ARGS``."""
-    launch = subprocess.Popen(['rosrun', 'rason', 'run_launch', 'rason'] + list(args),
-                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
-    try:
-        output, _ = launch.communicate(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        launch.send_signal(signal.SIGINT)    # roslaunch's own shutdown: no node left behind
-        output, _ = launch.communicate(timeout=60)
-        output += '\n(the launch did not end within %.0f s: interrupted)' % timeout
-    return launch.returncode, output
 
 
 class TestRunLaunch(unittest.TestCase):

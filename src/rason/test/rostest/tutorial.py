@@ -10,8 +10,7 @@ import math
 import os
 import re
 import shutil
-import signal
-import subprocess
+import sys
 import tempfile
 import threading
 import time
@@ -24,6 +23,9 @@ from geometry_msgs.msg import PoseStamped
 from rason_msgs.msg import Action
 
 from rason_dashboard.replay import MIND_TYPE, load_bag
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
+from rason_testing import run_launch  # noqa: E402
 
 NS = 'rover'
 START_X = -2.0          # the world's x of rover's start (rason_sim config/one_robot.yaml)
@@ -46,17 +48,9 @@ class TestTutorial(unittest.TestCase):
         cls.tmp = tempfile.mkdtemp(prefix='tutorial_')
         cls.bag = os.path.join(cls.tmp, 'first_robot.bag')
         started = time.monotonic()
-        launch = subprocess.Popen(['rosrun', 'rason', 'run_launch', 'rason', 'first_robot.launch',
-                                   'record:=true', 'bag:=' + cls.bag],
-                                  stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
-        try:
-            output, _ = launch.communicate(timeout=RUN_TIMEOUT)
-        except subprocess.TimeoutExpired:
-            launch.send_signal(signal.SIGINT)    # roslaunch's own shutdown: no node left behind
-            output, _ = launch.communicate(timeout=60)
-            output += '\n(the launch did not end within %.0f s: interrupted)' % RUN_TIMEOUT
+        cls.status, cls.output = run_launch('first_robot.launch', 'record:=true', 'bag:=' + cls.bag,
+                                            timeout=RUN_TIMEOUT)
         cls.wall = time.monotonic() - started
-        cls.status, cls.output = launch.returncode, output
         rospy.loginfo('the tutorial launch ran %.1f s (wall), exit status %d', cls.wall, cls.status)
 
     @classmethod
