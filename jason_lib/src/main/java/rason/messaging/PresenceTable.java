@@ -288,19 +288,20 @@ public final class PresenceTable {
             drop(p, why, c);
             return;
         }
-        peers.remove(p.masId);
-        c.departed.add(p.masId);
-        c.events.add(p.masId + " left: " + why);
-        for (String a : p.agents)
-            departed.put(a, p.masId + " " + why);
+        gone(p, why, c);
         p.heardNanos = nowNanos;
         away.put(p.masId, p);
     }
 
     private void drop(Peer p, String why, Changes c) {
+        gone(p, why, c);
+        c.lost.addAll(p.agents);
+    }
+
+    /** p leaves the table and present/1: what its agents owe is the caller's to decide. */
+    private void gone(Peer p, String why, Changes c) {
         peers.remove(p.masId);
         c.departed.add(p.masId);
-        c.lost.addAll(p.agents);
         c.events.add(p.masId + " left: " + why);
         for (String a : p.agents)
             departed.put(a, p.masId + " " + why);
