@@ -151,7 +151,7 @@ public class RosAgArch extends AgArch {
     @Override
     public boolean canSleep() {
         actions.takeBackOrphans(getTS().getC().getPendingActions());
-        return !newData && !actions.hasSettled() && !messaging.hasLost() && super.canSleep();
+        return !newData && !actions.hasSettled() && !messaging.hasSomethingToSettle() && super.canSleep();
     }
 
     // ---- messages to agents of other processes ----------------------------------------

@@ -198,7 +198,7 @@ public final class AgentMessaging {
     }
 
     /** Whether {@link #settle} has asks to fail or sends to end. */
-    public boolean hasLost() {
+    public boolean hasSomethingToSettle() {
         return asks.hasLost() || receipts.hasNews();
     }
 
