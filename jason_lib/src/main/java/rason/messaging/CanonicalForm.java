@@ -5,8 +5,8 @@ import java.nio.charset.StandardCharsets;
 import java.util.List;
 
 /**
- * The bytes a fleet MAC covers ({@link FleetAuth}): the fields of a message, a presence or a
- * last will, each length-prefixed or fixed-width, so that no two field lists encode alike and
+ * The bytes a fleet MAC covers ({@link FleetAuth}): the fields of a message, a presence, a
+ * last will or a pulse, each length-prefixed or fixed-width, so that no two field lists encode alike and
  * every channel signs the same bytes.
  */
 public final class CanonicalForm {
@@ -43,6 +43,11 @@ public final class CanonicalForm {
     /** The bytes the MAC of a last will covers. */
     public static byte[] will(String masId, String link, FleetAuth.Signed s) {
         return header(FleetAuth.Kind.WILL, masId, s).string(link).bytes();
+    }
+
+    /** The bytes the MAC of a pulse covers: the header alone. */
+    public static byte[] pulse(String masId, FleetAuth.Signed s) {
+        return header(FleetAuth.Kind.PULSE, masId, s).bytes();
     }
 
     private static Canonical header(FleetAuth.Kind kind, String mas, FleetAuth.Signed s) {

@@ -64,6 +64,7 @@ public final class Fleet {
         this.wall = wall;
         // never called under the presence lock: the directory asks the table who owns a name
         this.directory = new FleetDirectory(this::sendableMasOf, listener::providersChanged);
+        presence.setPulseGraceNanos(presenceTimeoutNanos / 2);
     }
 
     /** The directory facilitator of the whole fleet (our registrations and those others announce). */
@@ -91,9 +92,10 @@ public final class Fleet {
         auth.setIncarnation(t);
     }
 
-    /** Silence after which another process counts as gone (wall clock). */
+    /** Silence after which another process counts as gone (wall clock); a pulse this half as old outweighs a will. */
     public void setPresenceTimeoutNanos(long t) {
         presenceTimeoutNanos = t;
+        synchronized (presence) { presence.setPulseGraceNanos(t / 2); }
     }
 
     /** How long a process gone silent may come back to what was sent to it (see {@link PresenceTable#setAwayHoldNanos}). */
@@ -113,16 +115,9 @@ public final class Fleet {
     /**
      * A presence announcement arrived (signed: its authentication fields; publisher: who published it, "" if
      * unknown), with its directory registrations (dfAgents[i] provides dfServices[i]), which replace the earlier
-     * ones. Ours, malformed ones (logged) and, with authentication on, unauthentic ones (rate-limited) change nothing.
-     */
-    public void presenceAnnounced(String mas, String[] names, String[] dfAgents, String[] dfServices, boolean leaving,
-            float period, FleetAuth.Signed signed, String publisher) {
-        presenceAnnounced(mas, names, dfAgents, dfServices, leaving, period, signed, publisher, "");
-    }
-
-    /**
-     * The same, announced over the channel connection named link ("" if the channel has none):
-     * the last will of that connection, and only of that one, counts as mas leaving ({@link #willArrived}).
+     * ones, over the channel connection named link ("" if the channel has none): the last will of that
+     * connection, and only of that one, counts as mas leaving ({@link #willArrived}). Ours, malformed ones
+     * (logged) and, with authentication on, unauthentic ones (rate-limited) change nothing.
      */
     public void presenceAnnounced(String mas, String[] names, String[] dfAgents, String[] dfServices, boolean leaving,
             float period, FleetAuth.Signed signed, String publisher, String link) {
@@ -210,10 +205,26 @@ public final class Fleet {
         apply(c);
     }
 
-    /**
-     * Periodic presence check of a channel without links of its own (a broker): every known process
-     * counts as linked, and only silence (or its will) makes it leave.
-     */
+    /** A pulse of mas arrived (see {@link FleetAuth#signPulse}); publisher as for {@link #willArrived}. */
+    public void pulseArrived(String mas, FleetAuth.Signed signed, String publisher) {
+        if (mas == null || mas.isEmpty() || mas.equals(masId))
+            return;
+        FleetAuth.Refusal refused = auth.verifyPulse(mas, signed);
+        if (refused == null)
+            refused = auth.admit(FleetAuth.Kind.PULSE, mas, signed, wall.nanos(), () -> publishedBy(mas, publisher));
+        if (refused != null) {
+            limited.warn(DROPPED_PRESENCE + " (" + refused.problem().word + ")", "dropped pulse of "
+                    + InputLimits.abbreviate(mas, 100) + ": " + refused.text(), wall.nanos());
+            return;
+        }
+        PresenceTable.Changes c;
+        synchronized (presence) {
+            c = presence.pulse(mas, signed.incarnation(), wall.nanos());
+        }
+        apply(c);
+    }
+
+    /** Periodic check for a channel without links of its own (a broker): only silence or a will makes a process leave. */
     public void presenceTickAllLinked() {
         PresenceTable.Changes c;
         synchronized (presence) {
@@ -226,10 +237,7 @@ public final class Fleet {
     /** Kind of the rate-limited lines of directory registrations in a presence that are ignored. */
     public static final String IGNORED_REGISTRATION = "ignored directory registration";
 
-    /**
-     * Called every few tens of milliseconds (wall clock) with the ids of the
-     * processes our message publisher is connected to: silent ones leave.
-     */
+    /** Periodic check (every few tens of ms) with the processes our message publisher is connected to: silent ones leave. */
     public void presenceTick(String[] linkedMas) {
         PresenceTable.Changes c;
         synchronized (presence) {
@@ -240,29 +248,21 @@ public final class Fleet {
 
     /** How many other processes (robots) can be reached now. */
     public int reachableProcesses() {
-        synchronized (presence) {
-            return presence.linkedPeers();
-        }
+        synchronized (presence) { return presence.linkedPeers(); }
     }
 
     /** Names of the reachable agents of other processes, sorted. */
     public Set<String> reachable() {
-        synchronized (presence) {
-            return presence.reachable();
-        }
+        synchronized (presence) { return presence.reachable(); }
     }
 
     /** The process a message to agent goes to (see {@link PresenceTable#sendableMasOf}), or null. */
     public String sendableMasOf(String agent) {
-        synchronized (presence) {
-            return presence.sendableMasOf(agent);
-        }
+        synchronized (presence) { return presence.sendableMasOf(agent); }
     }
 
     public String whyUnreachable(String agent) {
-        synchronized (presence) {
-            return presence.whyUnreachable(agent);
-        }
+        synchronized (presence) { return presence.whyUnreachable(agent); }
     }
 
     /**

@@ -44,7 +44,9 @@ public final class FleetAuth {
     public enum Kind {
         MESSAGE("rason_msgs/AgentMessage"), PRESENCE("rason_msgs/Presence"),
         /** A channel's last will: "the connection named link of this process ended" (see {@link #signWill}). */
-        WILL("rason/will");
+        WILL("rason/will"),
+        /** A sign of life over a channel's second connection (see {@link #signPulse}). */
+        PULSE("rason/pulse");
 
         final String tag;
 
@@ -111,6 +113,7 @@ public final class FleetAuth {
     private final LongSupplier wallClock;
     private final AtomicLong messageSequence = new AtomicLong();
     private final AtomicLong presenceSequence = new AtomicLong();
+    private final AtomicLong pulseSequence = new AtomicLong();
     // access order: the eldest entry is the sender heard least recently
     private final Map<String, Seen> seen = new LinkedHashMap<>(16, 0.75f, true); // guarded by itself
     private volatile FleetKeys keys = null;
@@ -209,6 +212,15 @@ public final class FleetAuth {
         return sign(0, s -> CanonicalForm.will(masId, link, s));
     }
 
+    /**
+     * Our next pulse: "this run of masId is alive", with nothing else, sent over a connection of
+     * its own (in the order of publishing there) so that a stall of the connection carrying our
+     * messages and presence does not make us look gone.
+     */
+    public Signed signPulse(String masId) {
+        return sign(pulseSequence.incrementAndGet(), s -> CanonicalForm.pulse(masId, s));
+    }
+
     private Signed sign(long sequence, Function<Signed, byte[]> canonical) {
         long stamp = wallClock.getAsLong();
         if (!required)
@@ -262,6 +274,14 @@ public final class FleetAuth {
         if (!required)
             return null;
         return macProblem(s, () -> CanonicalForm.will(masId, link, s));
+    }
+
+    /** MAC and clock checks of an incoming pulse (no state is changed); null if it passes or auth is off. */
+    public Refusal verifyPulse(String masId, Signed s) {
+        if (!required)
+            return null;
+        Refusal r = macProblem(s, () -> CanonicalForm.pulse(masId, s));
+        return r != null ? r : clockProblem(s);
     }
 
     /**

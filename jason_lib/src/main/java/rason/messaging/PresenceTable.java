@@ -63,6 +63,9 @@ public final class PresenceTable {
         long incarnation; // 0 = not announced yet (known from a message only)
         final Set<String> agents = new LinkedHashSet<>();
         long heardNanos;
+        long pulseNanos;
+        boolean pulsing; // heard over a second connection (see pulse)
+        boolean ended; // its other connection ended while its pulse was heard: it goes when the pulse stops
         boolean linked;
         boolean everLinked; // a link that went down means the process is gone or cut off
 
@@ -76,6 +79,7 @@ public final class PresenceTable {
     // peers gone silent (or whose connection ended) that may come back with what was sent to them meanwhile
     private final Map<String, Peer> away = new LinkedHashMap<>();
     private long awayHoldNanos = 0;
+    private long pulseGraceNanos = 0;
     private Map<String, String> owners = new HashMap<>(); // agent -> masId
     private final Map<String, String> departed = new HashMap<>(); // agent -> why it is gone
     private final Set<String> reportedClashes = new HashSet<>();
@@ -98,6 +102,14 @@ public final class PresenceTable {
      */
     public void setAwayHoldNanos(long t) {
         awayHoldNanos = Math.max(0, t);
+    }
+
+    /**
+     * How recent a peer's pulse must be for the end of its other connection not to count at once
+     * (see {@link #connectionEnded}): the peer stays while pulses come at most this far apart.
+     */
+    public void setPulseGraceNanos(long t) {
+        pulseGraceNanos = Math.max(0, t);
     }
 
     /**
@@ -128,6 +140,7 @@ public final class PresenceTable {
             c.lost.addAll(p.agents);
             c.events.add(masId + " restarted");
             p.agents.clear();
+            p.pulsing = false;
         }
         if (p == null) {
             p = new Peer(masId, nextOrder++);
@@ -136,6 +149,7 @@ public final class PresenceTable {
         }
         p.incarnation = incarnation;
         p.heardNanos = nowNanos;
+        p.ended = false; // announced over a new connection
         p.agents.clear();
         p.agents.addAll(agents);
         recompute(before, c);
@@ -163,6 +177,31 @@ public final class PresenceTable {
     }
 
     /**
+     * A pulse of masId's run incarnation arrived, over a connection apart from the one carrying its
+     * messages and presence: a present peer is heard; one that went away (silent, or its other
+     * connection ended) is back with what it announced, since its process is alive.
+     */
+    public Changes pulse(String masId, long incarnation, long nowNanos) {
+        Changes c = new Changes();
+        Peer p = peers.get(masId);
+        if (p == null) {
+            p = away.get(masId);
+            if (p == null || p.incarnation != incarnation)
+                return c; // unknown (its presence will introduce it), or an earlier run's pulse
+            Set<String> before = reachable();
+            away.remove(masId);
+            peers.put(masId, p);
+            c.events.add(masId + " is back (its pulse is heard)");
+            recompute(before, c);
+        } else if (p.incarnation != incarnation)
+            return c;
+        p.heardNanos = nowNanos;
+        p.pulseNanos = nowNanos;
+        p.pulsing = true;
+        return c;
+    }
+
+    /**
      * Periodic update: which peers our message publisher is linked to, and
      * which peers have been silent for longer than timeoutNanos.
      */
@@ -171,7 +210,9 @@ public final class PresenceTable {
         Changes c = new Changes();
         Set<String> links = new HashSet<>(linkedMas);
         for (Peer p : new ArrayList<>(peers.values())) {
-            if (nowNanos - p.heardNanos > timeoutNanos)
+            if (p.ended && nowNanos - p.pulseNanos > pulseGraceNanos)
+                goAway(p, "its connection ended and its pulse stopped", nowNanos, c);
+            else if (nowNanos - p.heardNanos > timeoutNanos)
                 goAway(p, String.format(java.util.Locale.ROOT, "not heard for %.1f s", (nowNanos - p.heardNanos) / 1e9),
                         nowNanos, c);
             else {
@@ -195,6 +236,11 @@ public final class PresenceTable {
         Set<String> before = reachable();
         Changes c = new Changes();
         Peer p = peers.get(masId);
+        if (p != null && p.pulsing && p.incarnation == incarnation && nowNanos - p.pulseNanos <= pulseGraceNanos) {
+            p.ended = true; // a stall, if its pulse goes on; its death, if not (see tick)
+            c.events.add(masId + "'s connection ended while its pulse is heard: it stays while the pulse goes on");
+            return c;
+        }
         if (p != null && (p.incarnation == 0 || p.incarnation == incarnation)) {
             goAway(p, "its connection ended", nowNanos, c);
             recompute(before, c);

@@ -283,6 +283,34 @@ class MqttFleetTest {
     }
 
     @Test
+    void aStallOfTheMessageConnectionAloneMakesNoRobotLookGoneAndWhatWasSentArrivesOnce() throws Exception {
+        robot1Link = new BlackHoleProxy(broker.port());
+        join(robot1, ROBOT1);
+        join(robot2, ROBOT2);
+        RosAgArch bob = start(agents2, "bob", BOB);
+        RosAgArch alice = start(agents1, "alice", ALICE + "\n+!again <- .send(bob, tell, hello(2)); .send(bob, tell, done2).");
+        await("alice's messages at bob", () -> believes(bob, "finished(alice)"));
+        // robot1's connection for messages and presence stalls as TCP does when a segment is lost
+        // again and again; its pulse connection does not. The stall outlasts the presence timeout
+        // (2 s) and the broker's keep-alive (3 s), whose end sends robot1's last will.
+        robot1Link.stallAllBut(".pulse");
+        alice.getTS().getC().addAchvGoal(ASSyntax.parseLiteral("again"), null);
+        alice.wakeUpSense();
+        long start = System.nanoTime(), deadline = start + 10_000_000_000L;
+        while (System.nanoTime() - start < 2_500_000_000L || warningsWith("connection ended while its pulse is heard") == 0) {
+            assertTrue(robot2.fleet().fleet().reachable().contains("alice"), "robot2 lost alice during the stall");
+            assertTrue(robot1.fleet().fleet().reachable().contains("bob"), "robot1 lost bob during the stall");
+            assertTrue(System.nanoTime() < deadline, "robot1's will did not come within 10 s of the stall");
+            Thread.sleep(20);
+        }
+        System.out.printf("will held %.0f ms into the stall%n", (System.nanoTime() - start) / 1e6);
+        assertFalse(believes(bob, "heard(2)"), "nothing passed the stall");
+        robot1Link.heal();
+        await("the hello sent during the stall", () -> believes(bob, "heard(2)") && believes(bob, "done2"));
+        assertTrue(believes(bob, "present(alice)") && believes(alice, "present(bob)"));
+    }
+
+    @Test
     void robotsThatStartBeforeTheBrokerOrOutliveItFindEachOtherAgainAndMessagesGoOnce() throws Exception {
         int port = broker.port();
         broker.close(); // nobody listens: the robots keep trying

@@ -47,9 +47,9 @@ class FleetAuthenticationTest {
     void anUnsignedPresenceWithAHigherIncarnationNeitherHidesTheRobotNorAddsAnAgent() {
         robot2Present();
         fleet.presenceAnnounced(ROBOT2, new String[] { "bob", "eve" }, new String[0], new String[0], false, 0.5f,
-                new Signed(Long.MAX_VALUE, 1, FleetAuth.wallNanos(), "", new byte[0]), ROBOT2);
-        fleet.presenceAnnounced(ROBOT2, new String[] { "eve" }, new String[0], new String[0], false, 0.5f, UNSIGNED, "/intruder");
-        fleet.presenceAnnounced("/robot9/rason_mas", new String[] { "mallory" }, new String[0], new String[0], false, 0.5f, UNSIGNED, "/intruder");
+                new Signed(Long.MAX_VALUE, 1, FleetAuth.wallNanos(), "", new byte[0]), ROBOT2, "");
+        fleet.presenceAnnounced(ROBOT2, new String[] { "eve" }, new String[0], new String[0], false, 0.5f, UNSIGNED, "/intruder", "");
+        fleet.presenceAnnounced("/robot9/rason_mas", new String[] { "mallory" }, new String[0], new String[0], false, 0.5f, UNSIGNED, "/intruder", "");
         fleet.presenceTick(new String[] { ROBOT2, "/robot9/rason_mas" });
         assertEquals(Set.of("bob"), fleet.reachable());
         assertEquals("dropped presence of /robot9/rason_mas announcing [mallory]: unauthenticated: no mac"
@@ -61,7 +61,7 @@ class FleetAuthenticationTest {
     @Test
     void anUnsignedLeavingAnnouncementDoesNotHideTheRobot() {
         robot2Present();
-        fleet.presenceAnnounced(ROBOT2, new String[] { "bob" }, new String[0], new String[0], true, 0.5f, UNSIGNED, "/intruder");
+        fleet.presenceAnnounced(ROBOT2, new String[] { "bob" }, new String[0], new String[0], true, 0.5f, UNSIGNED, "/intruder", "");
         fleet.presenceTick(new String[] { ROBOT2 });
         assertEquals(Set.of("bob"), fleet.reachable());
         assertEquals("dropped presence of /robot2/rason_mas (leaving): unauthenticated: no mac"
@@ -71,7 +71,7 @@ class FleetAuthenticationTest {
     @Test
     void aCopyOfAGenuinePresencePublishedByAnotherNodeIsForged() {
         FleetAuth.Signed s = robot2.auth.signPresence(ROBOT2, List.of("bob"), 0.5f, true);
-        fleet.presenceAnnounced(ROBOT2, new String[] { "bob" }, new String[0], new String[0], true, 0.5f, s, "/intruder");
+        fleet.presenceAnnounced(ROBOT2, new String[] { "bob" }, new String[0], new String[0], true, 0.5f, s, "/intruder", "");
         assertEquals("dropped presence of /robot2/rason_mas (leaving): forged: published by node /intruder, not by "
                 + ROBOT2, lastLine());
     }
@@ -81,7 +81,7 @@ class FleetAuthenticationTest {
         robot2Present();
         FleetAuth.Signed leaving = robot2.auth.signPresence(ROBOT2, List.of("bob"), 0.5f, true);
         robot2.announce(fleet, false, "bob"); // published after the leaving one was recorded
-        fleet.presenceAnnounced(ROBOT2, new String[] { "bob" }, new String[0], new String[0], true, 0.5f, leaving, ROBOT2);
+        fleet.presenceAnnounced(ROBOT2, new String[] { "bob" }, new String[0], new String[0], true, 0.5f, leaving, ROBOT2, "");
         assertTrue(lastLine().startsWith("dropped presence of /robot2/rason_mas (leaving): replayed: sequence"),
                 lastLine());
         assertEquals(Set.of("bob"), fleet.reachable());
@@ -179,7 +179,7 @@ class FleetAuthenticationTest {
     @Test
     void withAuthenticationOffUnsignedTrafficIsTakenAsBefore() {
         fleet.auth().off();
-        fleet.presenceAnnounced(ROBOT2, new String[] { "bob" }, new String[0], new String[0], false, 0.5f, new Signed(5, 0, 0, "", new byte[0]), "");
+        fleet.presenceAnnounced(ROBOT2, new String[] { "bob" }, new String[0], new String[0], false, 0.5f, new Signed(5, 0, 0, "", new byte[0]), "", "");
         fleet.presenceTick(new String[] { ROBOT2 });
         assertEquals(Set.of("bob"), fleet.reachable());
         assertNotNull(deliver(robot2.message("carol", "alice", "tell", "hello(1)"), UNSIGNED, "/intruder"));

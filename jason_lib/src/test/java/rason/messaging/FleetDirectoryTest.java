@@ -192,7 +192,7 @@ class FleetDirectoryTest {
         SigningPeer r2 = new SigningPeer(R2, 100);
         FleetAuth.Signed s = r2.auth.signPresence(R2, List.of("bob"), List.of("bob"), List.of("paint"), 0.5f, false);
         f.presenceAnnounced(R2, new String[] { "bob" }, new String[] { "bob" }, new String[] { "steal" }, false, 0.5f, s,
-                R2);
+                R2, "");
         assertEquals(List.of(), f.directory().search("steal"));
         assertEquals(Set.of(), f.reachable());
     }

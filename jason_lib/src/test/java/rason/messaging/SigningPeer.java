@@ -36,13 +36,13 @@ final class SigningPeer {
     /** Its next presence, as published, delivered to fleet. */
     void announce(Fleet fleet, boolean leaving, String... agents) {
         FleetAuth.Signed s = auth.signPresence(mas, List.of(agents), 0.5f, leaving);
-        fleet.presenceAnnounced(mas, agents, new String[0], new String[0], leaving, 0.5f, s, mas);
+        fleet.presenceAnnounced(mas, agents, new String[0], new String[0], leaving, 0.5f, s, mas, "");
     }
 
     /** Its next presence with directory registrations (dfAgents[i] provides dfServices[i]), delivered to fleet. */
     void announce(Fleet fleet, String[] agents, String[] dfAgents, String[] dfServices) {
         FleetAuth.Signed s = auth.signPresence(mas, List.of(agents), List.of(dfAgents), List.of(dfServices), 0.5f, false);
-        fleet.presenceAnnounced(mas, agents, dfAgents, dfServices, false, 0.5f, s, mas);
+        fleet.presenceAnnounced(mas, agents, dfAgents, dfServices, false, 0.5f, s, mas, "");
     }
 
     WireMessage message(String sender, String receiver, String performative, String content) {

@@ -53,11 +53,10 @@ import rason.messaging.WireMessage;
  * <p>
  * <b>Presence.</b> A signed presence, retained on our presence topic, every presence period
  * (the heartbeat) and at once when our agents or registrations change; a signed leaving one
- * when we close. A process that dies without leaving: the broker publishes the last will of
- * its connection (retained, in place of its presence). A link that goes quiet without the
- * broker noticing: the heartbeats stop, and after the presence timeout of silence the process
- * counts as gone; any message from it counts as a heartbeat, so lost heartbeats alone do not
- * make a present process look gone.
+ * when we close; a pulse every period over a second connection ({@link MqttPulse}). A process
+ * that dies without leaving: the broker publishes the last will of its connection (retained, in
+ * place of its presence). A link gone quiet: after the presence timeout with no heartbeat, pulse
+ * or message from it, the process counts as gone.
  * <p>
  * <b>Why a will cannot be replayed.</b> A will is signed when the connection is made and sent
  * by the broker whenever that connection ends, maybe hours later: it cannot carry a fresh
@@ -116,6 +115,7 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
     private final SecureRandom random = new SecureRandom();
     private final SequenceGate duplicates = new SequenceGate(MAX_SENDERS);
     private final Thread sender;
+    private final MqttPulse pulse;
     private final ScheduledExecutorService ticker;
     private volatile String link = "";
     private volatile long nextHeartbeat;
@@ -147,13 +147,9 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
                     // a reconnect is a new connection: a new link and will, and our session resumed
                     ((Mqtt5ClientReconnector) c.getReconnector()).connect(connectMessage(false));
                 });
-        if (settings.tls())
-            b = b.sslConfig().trustManagerFactory(MqttCredentials.trust(settings.caFile())).applySslConfig();
-        if (!settings.username().isEmpty())
-            b = b.simpleAuth().username(settings.username()).password(MqttCredentials.password(settings.passwordFile()))
-                    .applySimpleAuth();
-        client = b.buildAsync();
+        client = MqttCredentials.apply(b, settings).buildAsync();
         client.publishes(MqttGlobalPublishFilter.ALL, this::arrived);
+        pulse = new MqttPulse(port.fleet(), clientId(masId), settings, topics, logger, wall, limited);
         sender = new Thread(this::sendLoop, "rason-mqtt-send");
         sender.setDaemon(true);
         ticker = Executors.newSingleThreadScheduledExecutor(r -> {
@@ -176,6 +172,7 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
         nextHeartbeat = wall.nanos();
         ticker.scheduleAtFixedRate(this::tick, 0, TICK_NANOS, TimeUnit.NANOSECONDS);
         client.connect(connectMessage(true)).exceptionally(e -> null); // failures: the disconnected listener
+        pulse.start();
     }
 
     /**
@@ -303,6 +300,7 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
             long now = wall.nanos();
             if (!closing) {
                 port.presenceTickAllLinked();
+                pulse.beat();
                 if (now - nextHeartbeat >= 0 && isConnected() && subscribed)
                     announceNow();
             }
@@ -364,6 +362,7 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
         closing = true;
         running.set(false);
         ticker.shutdownNow();
+        pulse.close(timeoutMillis);
         sender.interrupt();
         try {
             sender.join(timeoutMillis);
@@ -393,6 +392,7 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
         closing = true;
         running.set(false);
         ticker.shutdownNow();
+        pulse.close(1000);
         sender.interrupt();
         client.disconnectWith().reasonCode(Mqtt5DisconnectReasonCode.DISCONNECT_WITH_WILL_MESSAGE).send()
                 .orTimeout(1, TimeUnit.SECONDS).exceptionally(e -> null).join();

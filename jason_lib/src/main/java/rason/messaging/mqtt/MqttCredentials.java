@@ -12,10 +12,26 @@ import java.security.cert.CertificateFactory;
 
 import javax.net.ssl.TrustManagerFactory;
 
+import com.hivemq.client.mqtt.mqtt5.Mqtt5ClientBuilder;
+
 /** The broker's credentials as the ~params give them: the CA certificates to trust, the password file. */
 final class MqttCredentials {
 
     private MqttCredentials() {
+    }
+
+    /**
+     * b with the TLS and the user name and password that settings ask for.
+     *
+     * @throws IllegalArgumentException a CA or password file that cannot be read
+     */
+    static Mqtt5ClientBuilder apply(Mqtt5ClientBuilder b, MqttSettings settings) {
+        if (settings.tls())
+            b = b.sslConfig().trustManagerFactory(trust(settings.caFile())).applySslConfig();
+        if (!settings.username().isEmpty())
+            b = b.simpleAuth().username(settings.username()).password(password(settings.passwordFile()))
+                    .applySimpleAuth();
+        return b;
     }
 
     /**

@@ -16,7 +16,7 @@ import rason.messaging.WireMessage;
 final class MqttPayloads {
 
     static final byte VERSION = 1;
-    static final byte MESSAGE = 'M', PRESENCE = 'P', WILL = 'W';
+    static final byte MESSAGE = 'M', PRESENCE = 'P', WILL = 'W', PULSE = 'L';
 
     /** An agent message with its authentication fields. */
     record Message(WireMessage message, FleetAuth.Signed signed) {
@@ -29,6 +29,10 @@ final class MqttPayloads {
 
     /** The last will of mas's connection named link. */
     record Will(String mas, String link, FleetAuth.Signed signed) {
+    }
+
+    /** A pulse of mas: alive (see {@link FleetAuth#signPulse}). */
+    record Pulse(String mas, FleetAuth.Signed signed) {
     }
 
     private MqttPayloads() {
@@ -52,8 +56,12 @@ final class MqttPayloads {
         return new Writer(WILL).string(will.mas()).string(will.link()).signed(will.signed()).bytes();
     }
 
+    static byte[] pulse(Pulse pulse) {
+        return new Writer(PULSE).string(pulse.mas()).signed(pulse.signed()).bytes();
+    }
+
     /**
-     * @return a {@link Message}, {@link Presence} or {@link Will}
+     * @return a {@link Message}, {@link Presence}, {@link Will} or {@link Pulse}
      * @throws IllegalArgumentException not one of ours, or cut short (the text says which)
      */
     static Object decode(byte[] payload) {
@@ -68,6 +76,7 @@ final class MqttPayloads {
             case PRESENCE -> new Presence(string(b), strings(b), strings(b), strings(b),
                     Float.intBitsToFloat(b.getInt()), b.get() != 0, string(b), signed(b));
             case WILL -> new Will(string(b), string(b), signed(b));
+            case PULSE -> new Pulse(string(b), signed(b));
             default -> throw new IllegalArgumentException("unknown kind " + kind);
             };
             if (b.hasRemaining())

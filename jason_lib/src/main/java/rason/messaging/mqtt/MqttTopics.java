@@ -7,7 +7,8 @@ package rason.messaging.mqtt;
  * <li>{@code rason/presence/robot1/rason_mas}: that process's presence, retained (its
  *     heartbeats, its leaving, and the last will of its connection);</li>
  * <li>{@code rason/inbox/robot1/rason_mas}: agent messages to that process;</li>
- * <li>{@code rason/broadcast}: agent messages to every process.</li>
+ * <li>{@code rason/broadcast}: agent messages to every process;</li>
+ * <li>{@code rason/pulse/robot1/rason_mas}: that process's pulses (over its second connection).</li>
  * </ul>
  */
 final class MqttTopics {
@@ -32,6 +33,20 @@ final class MqttTopics {
 
     String broadcast() {
         return prefix + "broadcast";
+    }
+
+    String pulse(String masId) {
+        return prefix + "pulse" + levels(masId);
+    }
+
+    String allPulses() {
+        return prefix + "pulse/#";
+    }
+
+    /** The process whose pulse topic this is, or null if it is none. */
+    String pulseOf(String topic) {
+        String head = prefix + "pulse/";
+        return topic.startsWith(head) ? topic.substring(head.length() - 1) : null;
     }
 
     /** The process whose presence topic this is, or null if it is none. */
