@@ -149,7 +149,7 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
                 });
         client = MqttCredentials.apply(b, settings).buildAsync();
         client.publishes(MqttGlobalPublishFilter.ALL, this::arrived);
-        pulse = new MqttPulse(port.fleet(), clientId(masId), settings, topics, logger, wall, limited);
+        pulse = new MqttPulse(masId, port.auth(), port.fleet()::pulseArrived, clientId(masId), settings, topics, wall, limited);
         sender = new Thread(this::sendLoop, "rason-mqtt-send");
         sender.setDaemon(true);
         ticker = Executors.newSingleThreadScheduledExecutor(r -> {
@@ -362,7 +362,7 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
         closing = true;
         running.set(false);
         ticker.shutdownNow();
-        pulse.close(timeoutMillis);
+        pulse.close(timeoutMillis).join();
         sender.interrupt();
         try {
             sender.join(timeoutMillis);
@@ -392,7 +392,7 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
         closing = true;
         running.set(false);
         ticker.shutdownNow();
-        pulse.close(1000);
+        pulse.close(1000).join();
         sender.interrupt();
         client.disconnectWith().reasonCode(Mqtt5DisconnectReasonCode.DISCONNECT_WITH_WILL_MESSAGE).send()
                 .orTimeout(1, TimeUnit.SECONDS).exceptionally(e -> null).join();

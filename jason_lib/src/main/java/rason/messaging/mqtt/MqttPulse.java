@@ -1,7 +1,7 @@
 package rason.messaging.mqtt;
 
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
-import java.util.logging.Logger;
 
 import com.hivemq.client.mqtt.MqttClientState;
 import com.hivemq.client.mqtt.MqttGlobalPublishFilter;
@@ -13,7 +13,6 @@ import com.hivemq.client.mqtt.mqtt5.message.publish.Mqtt5Publish;
 
 import rason.core.Clock;
 import rason.core.RateLimitedLog;
-import rason.messaging.Fleet;
 import rason.messaging.FleetAuth;
 
 /**
@@ -30,7 +29,13 @@ import rason.messaging.FleetAuth;
  */
 final class MqttPulse {
 
-    private final Fleet fleet;
+    /** Where the pulses of others go (see {@link rason.messaging.Fleet#pulseArrived}). */
+    interface Heard {
+        void pulseArrived(String mas, FleetAuth.Signed signed, String publisher);
+    }
+
+    private final FleetAuth auth;
+    private final Heard heard;
     private final String masId;
     private final MqttSettings settings;
     private final MqttTopics topics;
@@ -40,11 +45,16 @@ final class MqttPulse {
     private volatile boolean subscribed; // on the current connection
     private long nextPulse; // on the caller's thread only
 
-    /** @throws IllegalArgumentException the settings cannot be used (see {@link MqttCredentials#apply}) */
-    MqttPulse(Fleet fleet, String clientId, MqttSettings settings, MqttTopics topics, Logger logger, Clock wall,
-            RateLimitedLog limited) {
-        this.fleet = fleet;
-        this.masId = fleet.getMasId();
+    /**
+     * @param auth signs our pulses
+     * @param heard takes the pulses of others; null: ours are sent, others' not listened to
+     * @throws IllegalArgumentException the settings cannot be used (see {@link MqttCredentials#apply})
+     */
+    MqttPulse(String masId, FleetAuth auth, Heard heard, String clientId, MqttSettings settings, MqttTopics topics,
+            Clock wall, RateLimitedLog limited) {
+        this.auth = auth;
+        this.heard = heard;
+        this.masId = masId;
         this.settings = settings;
         this.topics = topics;
         this.wall = wall;
@@ -69,17 +79,27 @@ final class MqttPulse {
     }
 
     private void subscribe() {
+        if (heard == null) {
+            subscribed = true;
+            return;
+        }
         client.subscribeWith().topicFilter(topics.allPulses()).qos(MqttQos.AT_MOST_ONCE).noLocal(true).send()
                 .whenComplete((ack, e) -> subscribed = e == null);
     }
 
-    /** Sends our pulse when one is due and the connection is up (call from one thread, often). */
+    /** Sends our pulse when one is due (call from one thread, often). */
     void beat() {
         long now = wall.nanos();
-        if (now - nextPulse < 0 || !subscribed || client.getState() != MqttClientState.CONNECTED)
+        if (now - nextPulse >= 0)
+            beatNow(now);
+    }
+
+    /** Sends our pulse now if the connection is up (call from one thread). */
+    void beatNow(long now) {
+        if (!subscribed || client.getState() != MqttClientState.CONNECTED)
             return;
         nextPulse = now + settings.presencePeriodNanos();
-        byte[] payload = MqttPayloads.pulse(new MqttPayloads.Pulse(masId, fleet.auth().signPulse(masId)));
+        byte[] payload = MqttPayloads.pulse(new MqttPayloads.Pulse(masId, auth.signPulse(masId)));
         client.publish(Mqtt5Publish.builder().topic(topics.pulse(masId)).qos(MqttQos.AT_MOST_ONCE).payload(payload)
                 .build()).exceptionally(e -> null); // a lost pulse is what the next one is for
     }
@@ -90,7 +110,7 @@ final class MqttPulse {
             Object payload = MqttPayloads.decode(p.getPayloadAsBytes());
             String publisher = topics.pulseOf(topic);
             if (publisher != null && payload instanceof MqttPayloads.Pulse pulse)
-                fleet.pulseArrived(pulse.mas(), pulse.signed(), publisher);
+                heard.pulseArrived(pulse.mas(), pulse.signed(), publisher);
             else
                 limited.warn(MqttChannel.UNREADABLE, "mqtt: dropped a " + payload.getClass().getSimpleName() + " on "
                         + topic, wall.nanos());
@@ -100,8 +120,8 @@ final class MqttPulse {
         }
     }
 
-    /** Closes the connection (no more pulses), waiting up to timeoutMillis. */
-    void close(long timeoutMillis) {
-        client.disconnect().orTimeout(timeoutMillis, TimeUnit.MILLISECONDS).exceptionally(e -> null).join();
+    /** Closes the connection (no more pulses); completes when closed, or after timeoutMillis. */
+    CompletableFuture<?> close(long timeoutMillis) {
+        return client.disconnect().orTimeout(timeoutMillis, TimeUnit.MILLISECONDS).exceptionally(e -> null);
     }
 }

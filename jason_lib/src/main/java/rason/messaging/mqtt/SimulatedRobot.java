@@ -19,6 +19,8 @@ import com.hivemq.client.mqtt.mqtt5.message.disconnect.Mqtt5DisconnectReasonCode
 import com.hivemq.client.mqtt.mqtt5.message.publish.Mqtt5Publish;
 import com.hivemq.client.mqtt.mqtt5.message.publish.Mqtt5WillPublish;
 
+import rason.core.Clock;
+import rason.core.RateLimitedLog;
 import rason.messaging.FleetAuth;
 import rason.messaging.FleetKeys;
 import rason.messaging.WireMessage;
@@ -27,7 +29,7 @@ import rason.messaging.WireMessage;
  * A light stand-in for a robot's rason_mas on the fleet's broker, for benchmarks: one MQTT 5
  * connection that announces one agent the way {@link MqttChannel} does (a signed, retained
  * presence every presence period over a connection named by a random link, a signed last will
- * of that link, the same keep-alive and reconnects), sends signed agent messages and hands the
+ * of that link, the same keep-alive and reconnects, and pulses over a second one), sends signed agent messages and hands the
  * messages that reach its inbox to a consumer. No Jason, no ROS: a hundred fit in one JVM.
  */
 public final class SimulatedRobot {
@@ -39,6 +41,7 @@ public final class SimulatedRobot {
     private final FleetAuth auth;
     private final ScheduledExecutorService ticker;
     private final Mqtt5AsyncClient client;
+    private final MqttPulse pulse;
     private final SecureRandom random = new SecureRandom();
     private final Object presenceOrder = new Object();
     private final Object messageOrder = new Object();
@@ -71,6 +74,8 @@ public final class SimulatedRobot {
                 .addConnectedListener(c -> connected())
                 .addDisconnectedListener(c -> ((Mqtt5ClientReconnector) c.getReconnector()).connect(connectMessage(false)))
                 .buildAsync();
+        pulse = new MqttPulse(masId, auth, null, MqttChannel.clientId(masId), settings, topics, Clock.WALL,
+                new RateLimitedLog(java.util.logging.Logger.getLogger("rason.bench.simulated")));
         client.publishes(MqttGlobalPublishFilter.ALL, p -> {
             try {
                 if (MqttPayloads.decode(p.getPayloadAsBytes()) instanceof MqttPayloads.Message m)
@@ -89,8 +94,9 @@ public final class SimulatedRobot {
         return agent;
     }
 
-    /** Connects (a clean start), subscribes its inbox and starts the heartbeats; completes once connected. */
+    /** Connects (a clean start), subscribes its inbox and starts the heartbeats and pulses; completes once connected. */
     public CompletableFuture<?> start() {
+        pulse.start();
         return client.connect(connectMessage(true));
     }
 
@@ -114,7 +120,10 @@ public final class SimulatedRobot {
         client.subscribeWith().topicFilter(topics.inbox(masId)).qos(MqttQos.AT_LEAST_ONCE).send();
         announce(false);
         if (heartbeats == null)
-            heartbeats = ticker.scheduleAtFixedRate(() -> announce(false), settings.presencePeriodNanos(),
+            heartbeats = ticker.scheduleAtFixedRate(() -> {
+                announce(false);
+                pulse.beatNow(Clock.WALL.nanos());
+            }, settings.presencePeriodNanos(),
                     settings.presencePeriodNanos(), TimeUnit.NANOSECONDS);
     }
 
@@ -154,9 +163,10 @@ public final class SimulatedRobot {
             h.cancel(false);
     }
 
-    /** Ends the connection as a dead process would: the broker publishes the will. */
+    /** Ends the connections as a dead process would: the broker publishes the will. */
     public CompletableFuture<?> abandon() {
         stopHeartbeats();
+        pulse.close(1000);
         return client.disconnectWith().reasonCode(Mqtt5DisconnectReasonCode.DISCONNECT_WITH_WILL_MESSAGE).send()
                 .orTimeout(2, TimeUnit.SECONDS).exceptionally(e -> null);
     }
@@ -164,6 +174,7 @@ public final class SimulatedRobot {
     /** A signed leaving presence, then a clean disconnect that ends the session. */
     public CompletableFuture<?> leave() {
         stopHeartbeats();
+        pulse.close(1000);
         return announce(true).orTimeout(2, TimeUnit.SECONDS).exceptionally(e -> null)
                 .thenCompose(x -> client.disconnectWith().sessionExpiryInterval(0).send())
                 .orTimeout(3, TimeUnit.SECONDS).exceptionally(e -> null);
