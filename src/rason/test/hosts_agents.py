@@ -5,8 +5,27 @@ Shared by the tests that run rason_mas processes in network namespaces (test_hos
 import collections
 import os
 import re
+import shutil
+import subprocess
 import threading
 import time
+
+import pytest
+
+
+def _workspace_built():
+    return bool(shutil.which('rosrun')) and subprocess.run(
+        ['rospack', 'find', 'rason_bridge'], capture_output=True).returncode == 0
+
+
+#: The pytestmark of a test that runs rason_mas processes in network namespaces.
+NEEDS_HOSTS_AND_WORKSPACE = [
+    pytest.mark.skipif(os.geteuid() != 0, reason='network namespaces need root (CI runs as root)'),
+    pytest.mark.skipif(not os.path.exists('/usr/sbin/nft'), reason='nftables not installed'),
+    pytest.mark.skipif(not os.path.exists('/usr/sbin/mosquitto'), reason='mosquitto not installed'),
+    pytest.mark.skipif(not shutil.which('roscore'), reason='ROS (roscore) not installed'),
+    pytest.mark.skipif(not _workspace_built(), reason='needs the built catkin workspace (rason_bridge)'),
+]
 
 #: Failures a send made during the partition may end with (docs/guides/multi-robot.md): the
 #: receiver already gone (receiver_not_found), or, with delivery receipts, no receipt within

@@ -22,7 +22,6 @@ and presence changes, stamped with the wall clock every host shares.
 """
 import collections
 import os
-import shutil
 import subprocess
 import time
 
@@ -30,25 +29,14 @@ import pytest
 
 from rason_hosts import Hosts, read_line
 
-from hosts_agents import FleetLog, check_order, check_sends, drain, report, stats
+from hosts_agents import NEEDS_HOSTS_AND_WORKSPACE, FleetLog, check_order, check_sends, drain, report, stats
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 AGENTS_DIR = os.path.join(HERE, 'agents', 'hosts')
 FLEET_CONF = os.path.join(HERE, '..', 'config', 'mosquitto', 'fleet.conf')
 
 
-def _workspace_built():
-    return bool(shutil.which('rosrun')) and subprocess.run(
-        ['rospack', 'find', 'rason_bridge'], capture_output=True).returncode == 0
-
-
-pytestmark = [
-    pytest.mark.skipif(os.geteuid() != 0, reason='network namespaces need root (CI runs as root)'),
-    pytest.mark.skipif(not os.path.exists('/usr/sbin/nft'), reason='nftables not installed'),
-    pytest.mark.skipif(not os.path.exists('/usr/sbin/mosquitto'), reason='mosquitto not installed'),
-    pytest.mark.skipif(not shutil.which('roscore'), reason='ROS (roscore) not installed'),
-    pytest.mark.skipif(not _workspace_built(), reason='needs the built catkin workspace (rason_bridge)'),
-]
+pytestmark = NEEDS_HOSTS_AND_WORKSPACE
 
 PORT = 1883            # each run has hosts of its own, so a fixed port never clashes
 DELAY_MS = 100         # the relay's delay, each way

@@ -15,7 +15,6 @@ c1 with d1 inside r1. Then r1 is cut off for PARTITION_SECONDS:
 """
 import collections
 import os
-import shutil
 import subprocess
 import time
 
@@ -23,25 +22,14 @@ import pytest
 
 from rason_hosts import Hosts, read_line
 
-from hosts_agents import FleetLog, check_order, check_sends, drain, report, stats
+from hosts_agents import NEEDS_HOSTS_AND_WORKSPACE, FleetLog, check_order, check_sends, drain, report, stats
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 AGENTS_DIR = os.path.join(HERE, 'agents', 'hosts')
 CONFIG_DIR = os.path.join(HERE, '..', 'config', 'mosquitto')
 
 
-def _workspace_built():
-    return bool(shutil.which('rosrun')) and subprocess.run(
-        ['rospack', 'find', 'rason_bridge'], capture_output=True).returncode == 0
-
-
-pytestmark = [
-    pytest.mark.skipif(os.geteuid() != 0, reason='network namespaces need root (CI runs as root)'),
-    pytest.mark.skipif(not os.path.exists('/usr/sbin/nft'), reason='nftables not installed'),
-    pytest.mark.skipif(not os.path.exists('/usr/sbin/mosquitto'), reason='mosquitto not installed'),
-    pytest.mark.skipif(not shutil.which('roscore'), reason='ROS (roscore) not installed'),
-    pytest.mark.skipif(not _workspace_built(), reason='needs the built catkin workspace (rason_bridge)'),
-]
+pytestmark = NEEDS_HOSTS_AND_WORKSPACE
 
 PORT = 1883
 PARTITION_SECONDS = 8.0   # past presence_timeout (2 s): r1 and r2 see each other go
