@@ -137,7 +137,8 @@ class QuietEndParent(roslaunch.parent.ROSLaunchParent):
             if node.required:
                 node.required = False    # no banner: run_end ends the launch instead
                 self.run_end.nodes.add(node_key(node.namespace, node.name))
-        print('run_launch: %s, effective configuration (namespace: nodes):' % os.path.basename(self.roslaunch_files[0][0]))
+        launch_file = os.path.basename(self.roslaunch_files[0][0])
+        print('run_launch: %s, effective configuration (namespace: nodes):' % launch_file)
         print('\n'.join(configuration([(n.namespace, n.name, n.type, n.args) for n in self.config.nodes],
                                        list(self.config.params))))
         sys.stdout.flush()

@@ -37,6 +37,7 @@ from rason_bridge.perception_pump import PerceptionPump
 from rason_bridge.presence_loop import PresenceLoop
 from rason_bridge.project_classpath import project_classpath
 from rason_bridge.ros_fleet import RosFleet
+from rason_bridge.source_watch import SourceWatch
 from rason_bridge.start_barrier import StartBarrier, hold
 
 _WRITE = {'error': rospy.logerr, 'warn': rospy.logwarn, 'info': rospy.loginfo, 'debug': rospy.logdebug}
@@ -89,7 +90,7 @@ class RasonMasNode(object):
         self._perceptions = PerceptionPump(
             PerceptionCoalescer(s.max_sources, java_config.max_source_length()),
             self._bridge.perception().perceive, self._bridge.releaseMemory, rospy.logwarn, rospy.logerr,
-            alive=self._running)
+            alive=self._running, watch=SourceWatch(s.expected_sources, s.expect_within))
         self._inbound = Inbound(self._bridge, self._channel, self.mas_id, self._perceptions, _ros_now_ns)
         self._mind = None
         if s.mind_period > 0:
