@@ -80,3 +80,12 @@ def test_the_fatal_line_is_found_in_a_rospy_log():
            '[rospy.core][INFO] 2026-11-26 18:50:00,200: signal_shutdown [bad configuration]\n')
     assert last_fatal_line(log) == 'generic_synthesizer: bad configuration: ~perceptions: x'
     assert last_fatal_line('[rosout][INFO] 2026-11-26 18:50:00,100: fine\n') is None
+
+
+def test_robot_launch_hands_the_expected_sources_to_rason_mas():
+    path = os.path.join(PACKAGE, 'launch', 'robot.launch')
+    config = roslaunch.config.load_config_default(
+        [(path, ['ns:=r1', 'mas:=/x/a.mas2j', 'expected_sources:=battery, pose'])], None, verbose=False)
+    assert config.params['/r1/rason_mas/expected_sources'].value == ['battery', 'pose']
+    config = roslaunch.config.load_config_default([(path, ['ns:=r1', 'mas:=/x/a.mas2j'])], None, verbose=False)
+    assert '/r1/rason_mas/expected_sources' not in config.params
