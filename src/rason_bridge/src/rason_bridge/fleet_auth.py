@@ -12,18 +12,18 @@ def default_key_file(ros_home):
     return os.path.join(ros_home, 'rason', 'fleet.key')
 
 
-def first_run_key(settings, key_file_given, make_key):
-    """A robot started with no fleet: with authentication required, neither ``~fleet_key`` nor
-    ``~fleet_key_file`` given and no file at the default place, a new key is made there (so one
-    robot runs without a set-up step) and the line to log is returned; else None (a given file
-    that is missing stays an error: it names a fleet's key that is not there).
+def first_run_key(settings, default_file, make_key):
+    """A robot started with no fleet: with authentication required, no ``~fleet_key``, the key
+    file the default one (:func:`default_key_file`) and no file there, a new key is made there
+    (so one robot runs without a set-up step) and the line to log is returned; else None (another
+    file that is missing stays an error: it names a fleet's key that is not there).
 
     :param settings: :data:`rason_bridge.params.Settings`
-    :param key_file_given: whether ``~fleet_key_file`` was set
+    :param default_file: :func:`default_key_file` of this process
     :param make_key: ``make_key(path)`` writes a new key file (:func:`rason_bridge.fleet_key.write_key`)
     """
     path = settings.fleet_key_file
-    if settings.fleet_auth == OFF or settings.fleet_key is not None or key_file_given or os.path.exists(path):
+    if settings.fleet_auth == OFF or settings.fleet_key is not None or path != default_file or os.path.exists(path):
         return None
     try:
         make_key(path)

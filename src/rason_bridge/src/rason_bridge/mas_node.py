@@ -25,7 +25,7 @@ from rason_bridge.action_sender import DEFERRED, NO_DECOMPOSER, ActionSender
 from rason_bridge.coalesce import PerceptionCoalescer
 from rason_bridge.exits import exit_for_shutdown
 from rason_bridge.fleet_key import make_new_key
-from rason_bridge.fleet_auth import OFF, first_run_key, no_key_help
+from rason_bridge.fleet_auth import OFF, default_key_file, first_run_key, no_key_help
 from rason_bridge.held_flusher import HeldFlusher
 from rason_bridge.inbound import Inbound
 from rason_bridge.jvm import JvmError, jason_lib_classpath, start_jvm
@@ -127,7 +127,7 @@ class RasonMasNode(object):
         if self.settings.fleet_auth != OFF and self.settings.fleet_key is not None:
             rospy.logwarn('the fleet key comes from ~fleet_key: anyone who reaches the ROS master can read the '
                           'parameter server, and with it command these agents; prefer ~fleet_key_file')
-        made = first_run_key(self.settings, rospy.has_param('~fleet_key_file'), make_new_key)
+        made = first_run_key(self.settings, default_key_file(rospkg.get_ros_home()), make_new_key)
         if made:
             rospy.loginfo(made)
         java_config.push_auth(self._bridge, self.settings)
