@@ -1,8 +1,10 @@
 """``rosrun rason run_launch PACKAGE FILE.launch [ARG:=VALUE ...]``: a launch file run as
 roslaunch runs it, except for how it ends. roslaunch ends a launch when a ``required`` node
 exits, but always with a red "REQUIRED process has died!" banner and with exit status 0,
-even when the run failed. Here a required node that exits ends the launch quietly, and the
-exit status is that node's: 0 when it finished cleanly (an agent's ``.stopMAS``), its own
+even when the run failed, and runs on when another node fails. Here a required node that
+exits, or any node that exits with a non-zero status while the launch runs (e.g. agents that
+cannot start on a robot whose ``.stopMAS`` would not end the launch), ends the launch quietly,
+and the exit status is that node's: 0 when it finished cleanly (an agent's ``.stopMAS``), its own
 non-zero status (or 128 + the signal that killed it) when it failed, and then the node's last
 fatal line (from its log file) is repeated last on screen. A launch that ends otherwise (Ctrl-C,
 every node gone) exits with status 1.
@@ -108,10 +110,12 @@ def node_log_file(run_id, process_name):
 
 
 class RunEnd(roslaunch.pmon.ProcessListener):
-    """Waits for the first of the ending nodes to exit and keeps its exit code."""
+    """Waits for the first of the ending nodes to exit, or any node to fail, and keeps its exit
+    code. A node killed by a signal has not failed: roslaunch's own shutdown (Ctrl-C) kills."""
 
     def __init__(self):
         self.nodes = set()
+        self.stopping = lambda: False
         self.ended_by = None
         self.process = None
         self.exit_code = None
@@ -119,7 +123,8 @@ class RunEnd(roslaunch.pmon.ProcessListener):
 
     def process_died(self, process_name, exit_code):
         node = process_base_name(process_name)
-        if node in self.nodes and not self.done.is_set():
+        failed = exit_code is not None and exit_code > 0 and not self.stopping()
+        if (node in self.nodes or failed) and not self.done.is_set():
             self.ended_by, self.process, self.exit_code = node, process_name, exit_code
             self.done.set()
 
@@ -147,6 +152,7 @@ class QuietEndParent(roslaunch.parent.ROSLaunchParent):
         super(QuietEndParent, self)._start_pm()
         # before any node starts, so a node that dies at once is heard too
         self.pm.add_process_listener(self.run_end)
+        self.run_end.stopping = lambda: self.pm.is_shutdown
 
 
 def launch_args_of(launch_file):

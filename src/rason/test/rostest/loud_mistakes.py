@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Mistakes that say so, with the nodes running: robot.launch with a wiring file in the wrong
 layout ends at once, under run_launch with the synthesizer's fatal line last on screen and
-under roslaunch through its REQUIRED banner; a generic_synthesizer configured with a real but
+under roslaunch through its REQUIRED banner; agents that cannot start end run_launch too, though
+not a required node; a generic_synthesizer configured with a real but
 wrong type (std_msgs/Float32 on a sensor_msgs/BatteryState topic) warns naming both types; and
 rason_mas warns once about the expected source that synthesizer never delivers."""
 import os
@@ -46,6 +47,15 @@ class TestLoudMistakes(unittest.TestCase):
         self.assertEqual(lines[-2], 'run_launch: loud1/generic_synthesizer failed (exit status 1): '
                                     'the launch is shut down')
         self.assertTrue(lines[-1].startswith('run_launch: loud1/generic_synthesizer: ' + FATAL), lines[-1])
+
+    def test_agents_that_cannot_start_end_run_launch_though_not_required(self):
+        status, output = run_launch('robot.launch', 'ns:=loud4', 'mas:=/nonexistent/nothing.mas2j', timeout=30)
+        self.assertNotEqual(status, 0, output[-3000:])
+        lines = [l for l in output.splitlines() if l.strip()]
+        self.assertRegex(lines[-2], r'^run_launch: loud4/rason_mas failed \(exit status %d\): the launch is shut down$'
+                         % status)
+        self.assertIn('/nonexistent/nothing.mas2j', lines[-1])
+        self.assertTrue(lines[-1].startswith('run_launch: loud4/rason_mas: '), lines[-1])
 
     def test_a_node_that_cannot_start_ends_roslaunch_too(self):
         launch = subprocess.run(['roslaunch', 'rason', 'robot.launch', 'ns:=loud2', 'perceptions:=' + WRAPPED],
