@@ -24,3 +24,32 @@ def test_exit_status_follows_the_shell():
     assert exit_status(-2) == 130     # killed by SIGINT
     assert exit_status(-9) == 137     # by SIGKILL
     assert exit_status(None) == 1     # not known
+
+
+def run_end(*required):
+    from rason_tools.run_launch import RunEnd
+    end = RunEnd()
+    end.nodes.update(required)
+    return end
+
+
+def test_a_required_node_ends_the_run_whatever_its_status():
+    end = run_end('faulty/rason_mas')
+    end.process_died('helper/vision_synth-3', 0)          # another node finishing cleanly: runs on
+    end.process_died('helper/vision_synth-4', -9)         # killed by a signal: runs on
+    assert not end.done.is_set()
+    end.process_died('faulty/rason_mas-7', 0)
+    assert (end.done.is_set(), end.ended_by, end.process, end.exit_code) == (
+        True, 'faulty/rason_mas', 'faulty/rason_mas-7', 0)
+
+
+def test_any_node_that_fails_while_the_launch_runs_ends_it_but_not_during_shutdown():
+    end = run_end('faulty/rason_mas')
+    end.process_died('helper/rason_mas-5', 1)
+    assert (end.done.is_set(), end.ended_by, end.exit_code) == (True, 'helper/rason_mas', 1)
+    end.process_died('faulty/rason_mas-7', 0)
+    assert end.ended_by == 'helper/rason_mas', 'the first end is kept'
+    stopping = run_end('faulty/rason_mas')
+    stopping.stopping = lambda: True
+    stopping.process_died('helper/rason_mas-5', 1)
+    assert not stopping.done.is_set()

@@ -73,3 +73,27 @@ def test_the_help_names_the_file_and_the_tool():
 def test_uint64_fields_keep_their_bits_as_java_longs(u64, i64):
     assert to_int64(u64) == i64
     assert to_uint64(i64) == u64
+
+
+def first_run(tmp_path, **given):
+    from rason_bridge.fleet_auth import first_run_key
+    from rason_bridge.fleet_key import make_new_key
+    s = read_settings(lambda name, default: given.get(name, default), str(tmp_path))
+    return first_run_key(s, default_key_file(str(tmp_path)), make_new_key), s.fleet_key_file
+
+
+def test_a_robot_started_with_no_fleet_makes_its_key_and_says_where_and_how_to_share_it(tmp_path):
+    line, path = first_run(tmp_path)
+    assert (tmp_path / 'rason' / 'fleet.key').stat().st_mode & 0o777 == 0o600
+    assert line.startswith('no fleet key yet: made a new one at %s (mode 0600)' % path)
+    assert 'copy this file to the same place on each of them' in line
+    again, _ = first_run(tmp_path)
+    assert again is None, 'an existing key is used as it is'
+
+
+def test_no_key_is_made_for_another_file_a_key_text_or_authentication_off(tmp_path):
+    given = str(tmp_path / 'fleet.key')
+    assert first_run(tmp_path, fleet_key_file=given)[0] is None   # a given missing file stays an error
+    assert first_run(tmp_path, fleet_key='k' * 32)[0] is None
+    assert first_run(tmp_path, fleet_auth='off')[0] is None
+    assert not (tmp_path / 'rason').exists() and not (tmp_path / 'fleet.key').exists()

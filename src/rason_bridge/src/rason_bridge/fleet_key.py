@@ -39,6 +39,11 @@ def write_key(path, key, force=False):
         os.close(fd)
 
 
+def make_new_key(path):
+    """Write a new key to ``path`` (which must not exist yet)."""
+    write_key(path, generate_key())
+
+
 def main(argv=None, ros_home=None):
     from rason_bridge.fleet_auth import default_key_file
     parser = argparse.ArgumentParser(prog='fleet_key', description=__doc__.split('\n\n')[1],

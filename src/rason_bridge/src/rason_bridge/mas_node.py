@@ -24,7 +24,8 @@ from rason_bridge import java_config, ros_links
 from rason_bridge.action_sender import DEFERRED, NO_DECOMPOSER, ActionSender
 from rason_bridge.coalesce import PerceptionCoalescer
 from rason_bridge.exits import exit_for_shutdown
-from rason_bridge.fleet_auth import OFF, no_key_help
+from rason_bridge.fleet_key import make_new_key
+from rason_bridge.fleet_auth import OFF, default_key_file, first_run_key, no_key_help
 from rason_bridge.held_flusher import HeldFlusher
 from rason_bridge.inbound import Inbound
 from rason_bridge.jvm import JvmError, jason_lib_classpath, start_jvm
@@ -36,6 +37,7 @@ from rason_bridge.perception_pump import PerceptionPump
 from rason_bridge.presence_loop import PresenceLoop
 from rason_bridge.project_classpath import project_classpath
 from rason_bridge.ros_fleet import RosFleet
+from rason_bridge.source_watch import SourceWatch
 from rason_bridge.start_barrier import StartBarrier, hold
 
 _WRITE = {'error': rospy.logerr, 'warn': rospy.logwarn, 'info': rospy.loginfo, 'debug': rospy.logdebug}
@@ -88,7 +90,7 @@ class RasonMasNode(object):
         self._perceptions = PerceptionPump(
             PerceptionCoalescer(s.max_sources, java_config.max_source_length()),
             self._bridge.perception().perceive, self._bridge.releaseMemory, rospy.logwarn, rospy.logerr,
-            alive=self._running)
+            alive=self._running, watch=SourceWatch(s.expected_sources, s.expect_within))
         self._inbound = Inbound(self._bridge, self._channel, self.mas_id, self._perceptions, _ros_now_ns)
         self._mind = None
         if s.mind_period > 0:
@@ -125,6 +127,9 @@ class RasonMasNode(object):
         if self.settings.fleet_auth != OFF and self.settings.fleet_key is not None:
             rospy.logwarn('the fleet key comes from ~fleet_key: anyone who reaches the ROS master can read the '
                           'parameter server, and with it command these agents; prefer ~fleet_key_file')
+        made = first_run_key(self.settings, default_key_file(rospkg.get_ros_home()), make_new_key)
+        if made:
+            rospy.loginfo(made)
         java_config.push_auth(self._bridge, self.settings)
         java_config.use_channel(self._bridge, self.settings)
 

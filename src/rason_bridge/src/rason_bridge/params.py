@@ -215,6 +215,11 @@ PARAMS = (
     Param('await_timeout', 'float', 30.0, 's (wall clock)', 'more than 0 s',
           'how long the node holds its agents for `await_agents`/`await_robots`; then they start anyway '
           '(with a warning naming what is missing)', _seconds(1e-9)),
+    Param('expected_sources', 'list', [], '', 'a list of perception sources (Jason atoms)',
+          'the perception sources the agents need: each not heard within `expect_within` of the agents\' start '
+          'is named once in a warning', _names, shown_default='[]'),
+    Param('expect_within', 'float', 10.0, 's (wall clock)', 'more than 0 s',
+          'how long `expected_sources` may stay silent after the agents start', _seconds(1e-9)),
     _limit('max_literal_length', 4096, 'characters of one literal'),
     _limit('max_content_length', 65536, 'characters of one message\'s content'),
     _limit('max_nesting', 32, 'brackets open at once'),

@@ -8,6 +8,7 @@ import threading
 import time
 
 from rason_bridge.coalesce import FloodEnd
+from rason_bridge.source_watch import SourceWatch
 
 #: How long a message from a new source may hold its connection back while max_sources
 #: others wait, before it is dropped (s).
@@ -25,10 +26,11 @@ class PerceptionPump(object):
     :param release_memory: ``release_memory()`` once a flood has ended
     :param warn: ``warn(format, *args)``; ``error`` likewise
     :param alive: ``alive()`` -> False once the process shuts down
+    :param watch: a :class:`rason_bridge.source_watch.SourceWatch` of the expected sources
     """
 
     def __init__(self, coalescer, perceive, release_memory, warn, error, alive=lambda: True,
-                 clock=time.monotonic):
+                 clock=time.monotonic, watch=None):
         self._coalescer = coalescer
         self._perceive = perceive
         self._release_memory = release_memory
@@ -38,12 +40,15 @@ class PerceptionPump(object):
         self._stop = threading.Event()
         self._flood = FloodEnd()
         self._next_summary = clock() + SUMMARY_PERIOD
+        self._watch = watch or SourceWatch((), 0.0)
 
     def put(self, source, literals, stamp):
         """Store one message (from a subscriber's thread)."""
+        self._watch.heard(source)
         self._coalescer.put(source, literals, stamp, wait=ROOM_WAIT)
 
     def start(self):
+        self._watch.start()
         threading.Thread(target=self._run, name='rason_perceive', daemon=True).start()
 
     def stop(self):
@@ -65,6 +70,8 @@ class PerceptionPump(object):
                 self._perceive(source, literals, stamp)
             except Exception as e:  # a bug must not end the thread every perception goes through
                 self._error('could not hand the perception of %r to the agents: %s', source[:100], e)
+        for line in self._watch.overdue():
+            self._warn('%s', line)
         if self._clock() >= self._next_summary:
             self._next_summary = self._clock() + SUMMARY_PERIOD
             line = self._coalescer.summary()

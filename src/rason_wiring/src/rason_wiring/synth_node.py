@@ -11,15 +11,19 @@ import sys
 import threading
 import time
 
+import rosgraph
 import rospy
 from rason_msgs.msg import Perception
 
 from rason_wiring import synth
 from rason_wiring.config import ConfigError
 from rason_wiring.ros_types import Resolver
+from rason_wiring.type_check import TypeCheck
 
 #: How often (wall time) the gates are polled: the rate limit's and refresh's resolution.
 POLL_PERIOD = 0.02
+#: How often (wall time) the master is asked which types the topics are published with.
+TYPE_CHECK_PERIOD = 2.0
 
 
 class _Entry(object):
@@ -39,6 +43,8 @@ class GenericSynthesizer(object):
             rospy.Subscriber(entry.synthesis.topic, entry.synthesis.msg_class, self._on_message,
                              callback_args=entry, queue_size=10)
         threading.Thread(target=self._poll, daemon=True, name='synth_poll').start()
+        self._type_check = TypeCheck([(s.entry, rospy.resolve_name(s.topic), s.type_name) for s in syntheses])
+        threading.Thread(target=self._check_types, daemon=True, name='synth_types').start()
         rospy.loginfo('generic_synthesizer: %s', '; '.join(
             '%s: %s (%s) -> source %s' % (s.entry, rospy.resolve_name(s.topic), s.type_name, s.source)
             for s in syntheses))
@@ -64,6 +70,17 @@ class GenericSynthesizer(object):
                     if out is not None:
                         self._publish(entry, out)
             time.sleep(POLL_PERIOD)
+
+    def _check_types(self):
+        master = rosgraph.Master(rospy.get_name())
+        while not rospy.is_shutdown():
+            try:
+                published = dict(master.getPublishedTopics('/'))
+            except Exception:      # the master is gone: the node is shutting down
+                published = {}
+            for line in self._type_check.warnings(published, time.monotonic()):
+                rospy.logwarn('generic_synthesizer: %s', line)
+            time.sleep(TYPE_CHECK_PERIOD)
 
     def _publish(self, entry, literals):
         self._perception.publish(Perception(source=entry.synthesis.source, perception=literals))

@@ -348,7 +348,8 @@ public final class FleetAuth {
         FleetKeys.Key key = k == null ? null : k.byId(s.keyId());
         if (key == null)
             return new Refusal(Problem.UNKNOWN_KEY, "signed with key '" + InputLimits.abbreviate(s.keyId(), 20)
-                    + "', which is not in this robot's fleet keys " + (k == null ? "[]" : k.ids()));
+                    + "', which is not in this robot's fleet keys " + (k == null ? "[]" : k.ids())
+                    + ": the robots' key files differ (put the same file on both; docs: Security)");
         if (s.mac().length != MAC_BYTES || !MessageDigest.isEqual(mac(key, canonical.get()), s.mac()))
             return new Refusal(Problem.BAD_MAC, "its mac does not match its fields (altered, or not signed with key "
                     + key.id() + ")");

@@ -1,0 +1,91 @@
+"""Launch mistakes that say so, before any node starts: an arg value the launch files refuse
+(naming the valid ones, as roslaunch shows it), an arg the file does not declare (run_launch
+refuses it), the effective configuration run_launch shows first, and the fatal line it repeats
+last. The launch files are parsed as roslaunch parses them; no ROS master."""
+import os
+
+import pytest
+
+roslaunch = pytest.importorskip('roslaunch')
+pytest.importorskip('rospkg').RosPack().get_path('rason')   # $(find rason) must resolve
+from rason_tools.launch_args import PACKAGE  # noqa: E402
+from rason_tools.run_launch import configuration, last_fatal_line, undeclared_args  # noqa: E402
+
+
+def refusal(launch, *args):
+    """The text roslaunch stops with for ``launch ARGS`` (as on screen: 'Invalid <arg> tag: ...')."""
+    path = os.path.join(PACKAGE, 'launch', launch)
+    with pytest.raises(roslaunch.RLException) as e:
+        roslaunch.config.load_config_default([(path, list(args))], None, verbose=False)
+    return str(e.value)
+
+
+@pytest.mark.parametrize('launch, arg, says', [
+    ('faulty_helper.launch', 'fault:=left',
+     "'fault:=left is not a fault: none, left_actuator, right_actuator, both_actuators or odometry'"),
+    ('faulty_helper.launch', 'rate:=fast', "'rate:=fast: the real-time factor is a number, 0 or more"),
+    ('faulty_helper.launch', 'rate:=-1', "'rate:=-1: the real-time factor is a number, 0 or more"),
+    ('faulty_helper.launch', 'severity:=2', "'severity:=2: a number in (0, 1] is needed"),
+    ('faulty_helper.launch', 'interaction:=dark', "'interaction:=dark is not known: none, dim, moved_light, occlusion or box'"),
+    ('faulty_helper.launch', 'lockstep:=maybe', "'lockstep:=maybe is not known: true, false or auto'"),
+    ('faulty_helper.launch', 'fleet_auth:=on', "'fleet_auth:=on is not known: required or off'"),
+    ('two_robots.launch', 'fault:=left', "'fault:=left is not a fault"),
+    ('fault_tolerance.launch', 'rate:=fast', "'rate:=fast: the real-time factor"),
+    ('robot.launch', 'fault_at:=soon', "'fault_at:=soon: a number of seconds, 0 or more"),
+    ('robot.launch', 'output:=loud', "'output:=loud is not known: screen or log'"),
+])
+def test_a_bad_value_stops_the_launch_naming_the_valid_ones(launch, arg, says):
+    args = [arg] + (['ns:=r1'] if launch == 'robot.launch' else [])
+    assert 'Invalid <arg> tag: ' + says in refusal(launch, *args)
+
+
+def test_a_fault_without_the_fault_injector_is_refused():
+    assert "'fault:=odometry needs the fault injector: leave fault_injector:=true'" in refusal(
+        'robot.launch', 'ns:=r1', 'fault:=odometry', 'fault_injector:=false')
+
+
+def test_good_values_pass():
+    path = os.path.join(PACKAGE, 'launch', 'faulty_helper.launch')
+    config = roslaunch.config.load_config_default(
+        [(path, ['fault:=left_actuator', 'rate:=0', 'severity:=0.5', 'lockstep:=true', 'fleet_auth:=off'])], None,
+        verbose=False)
+    assert {n.namespace for n in config.nodes} >= {'/faulty/', '/helper/'}
+
+
+def test_an_undeclared_arg_is_refused_naming_close_ones_or_all():
+    declared = ['ns', 'fault', 'rate']
+    assert undeclared_args(['ns:=a', 'fault:=none', '_x:=1'], declared) == []
+    assert undeclared_args(['nss:=x'], declared) == [
+        "nss:=x: the launch file has no argument 'nss' (roslaunch would ignore it): did you mean ns?"]
+    assert undeclared_args(['robto:=helper'], declared) == [
+        "robto:=helper: the launch file has no argument 'robto' (roslaunch would ignore it): "
+        "its arguments: ns, fault, rate"]
+
+
+def test_the_configuration_shows_namespaces_nodes_programs_and_wiring():
+    nodes = [('/rover/', 'motion_decomp', 'motion_decomp_node', ''),
+             ('/rover/', 'generic_synthesizer', 'generic_synthesizer', ''),
+             ('/rover/', 'rason_mas', 'rason_mas', '/x/driver.mas2j'),
+             ('/', 'rason_sim', 'rason_sim_node', '')]
+    params = ['/rover/generic_synthesizer/perceptions/pose/topic', '/rover/generic_synthesizer/perceptions/pose/type',
+              '/rover/generic_synthesizer/perceptions/battery/topic', '/rason_sim/seed']
+    assert configuration(nodes, params) == [
+        '  /: rason_sim',
+        '  /rover/: motion_decomp; generic_synthesizer (perceptions: battery, pose); rason_mas (program /x/driver.mas2j)']
+
+
+def test_the_fatal_line_is_found_in_a_rospy_log():
+    log = ('[rosout][INFO] 2026-11-26 18:50:00,100: starting\n'
+           '[rosout][FATAL] 2026-11-26 18:50:00,123: generic_synthesizer: bad configuration: ~perceptions: x\n'
+           '[rospy.core][INFO] 2026-11-26 18:50:00,200: signal_shutdown [bad configuration]\n')
+    assert last_fatal_line(log) == 'generic_synthesizer: bad configuration: ~perceptions: x'
+    assert last_fatal_line('[rosout][INFO] 2026-11-26 18:50:00,100: fine\n') is None
+
+
+def test_robot_launch_hands_the_expected_sources_to_rason_mas():
+    path = os.path.join(PACKAGE, 'launch', 'robot.launch')
+    config = roslaunch.config.load_config_default(
+        [(path, ['ns:=r1', 'mas:=/x/a.mas2j', 'expected_sources:=battery, pose'])], None, verbose=False)
+    assert config.params['/r1/rason_mas/expected_sources'].value == ['battery', 'pose']
+    config = roslaunch.config.load_config_default([(path, ['ns:=r1', 'mas:=/x/a.mas2j'])], None, verbose=False)
+    assert '/r1/rason_mas/expected_sources' not in config.params
