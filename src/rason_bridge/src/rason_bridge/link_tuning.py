@@ -8,7 +8,7 @@ a row stall a connection for seconds (longer than ``presence_timeout``), and aft
 the next retransmission may come long after the link healed. With ``TCP_THIN_LINEAR_TIMEOUTS``
 Linux keeps the timeout linear for the first 6 retransmissions of a connection with fewer than
 4 segments in flight, as fleet traffic mostly is (docs/guides/fleet-channel.md, "The ROS
-channel on lossy links").
+channel across hosts").
 """
 import socket
 import weakref
