@@ -8,9 +8,10 @@ message every 0.3 s (tell, achieve, askOne in turn), each from an intention of i
 waits for the delivery receipt. Each robot's link loses frames in each direction. One run
 (the module fixture, 60-90 s) plays two phases:
 
-  (loss) 10 % loss for LOSS_SECONDS: every message arrives exactly once, in order (if a
-         TCP stall made an agent lose present/1 of its peer, each send must only end, received
-         or failed); that present/1 is never lost is asserted only with
+  (loss) 10 % loss for LOSS_SECONDS: every send ends, every message arrives exactly once, in
+         order, except one refused before it was published (receiver_not_found, while the peer
+         was dropped); a send may fail receiver_departed although its message arrived (a drop
+         while its receipt was on its way); that present/1 is never lost is asserted only with
          RASON_ASSERT_PRESENCE_UNDER_LOSS=1, since it does not hold yet on this channel;
   (cut)  no loss (as in the MQTT acceptance; RASON_ROS_CUT_LOSS=10 to measure with loss), r2
          cut off for 5 s: every send since the end of (loss) is received or failed with a
@@ -194,9 +195,12 @@ def test_10_percent_loss_never_drops_presence_nor_a_message(ros_run):
     sent = [k for k, (_, at) in seen.sends.items() if marks['loss_start'] <= at < marks['loss_end'] - IN_FLIGHT]
     print('\n(loss) %.1f s at %d %% loss: %s; presence drops %d' % (
         marks['loss_end'] - marks['loss_start'], LOSS, _stats(seen, sent), len(drops)))
-    # a drop fails what waits for the peer's receipts (receiver_departed): then each send must
-    # only end, received or failed, never lost silently
-    problems = _problems(seen, sent, must_deliver=not drops)
+    # A presence drop (under this loss, or the cut's own for receipts still on their way) fails
+    # what waits for the peer's receipts (receiver_departed), though those messages arrive; only
+    # a send refused before it was published (receiver_not_found) may be missing.
+    problems = _problems(seen, sent, must_deliver=False)
+    problems += ['%s -> %s #%d received %d times' % (k[0], PEER[k[0]], k[1], seen.got_count[k]) for k in sorted(sent)
+                 if seen.got_count[k] != 1 and 'receiver_not_found' not in seen.failures(k)]
     assert not problems, '\n'.join(problems[:40])
     # Not met on the ROS channel (docs/guides/fleet-channel.md, the ROS channel across hosts): a
     # TCP stall longer than presence_timeout still drops present/1 now and then at 10 % loss.
