@@ -21,33 +21,21 @@ waits for the delivery receipt. Each robot's link loses frames in each direction
 
 There is no delay here: the delay relay of rason_hosts relays one TCP port, and ROS opens a
 connection per topic, publisher and subscriber on ports it picks. The agents' output is read
-with the acceptance test's parser (test_hosts_fleet.FleetLog).
+with the acceptance tests' parser (hosts_agents.FleetLog).
 """
 import os
-import shutil
 import subprocess
 import time
 
 import pytest
 
 from rason_hosts import Hosts, read_line
-from test_hosts_fleet import FleetLog, _drain
+from hosts_agents import ALLOWED_FAILURES, NEEDS_HOSTS_AND_WORKSPACE, FleetLog, drain
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 AGENTS_DIR = os.path.join(HERE, 'agents', 'hosts')
 
-
-def _workspace_built():
-    return bool(shutil.which('rosrun')) and subprocess.run(
-        ['rospack', 'find', 'rason_bridge'], capture_output=True).returncode == 0
-
-
-pytestmark = [
-    pytest.mark.skipif(os.geteuid() != 0, reason='network namespaces need root (CI runs as root)'),
-    pytest.mark.skipif(not os.path.exists('/usr/sbin/nft'), reason='nftables not installed'),
-    pytest.mark.skipif(not shutil.which('roscore'), reason='ROS (roscore) not installed'),
-    pytest.mark.skipif(not _workspace_built(), reason='needs the built catkin workspace (rason_bridge)'),
-]
+pytestmark = NEEDS_HOSTS_AND_WORKSPACE
 
 MASTER_HOST = 'r1'
 MASTER_PORT = 11311
@@ -58,7 +46,6 @@ PARTITION_SECONDS = 5.0
 RESUME_LIMIT = 5.0        # s from the heal to the first message sent after it arriving (the goal)
 RESUME_WAIT = 30.0        # s the run waits for that (asserted)
 MESSAGE_TTL = 15
-ALLOWED_FAILURES = {'receiver_not_found', 'undelivered', 'receiver_departed'}
 IN_FLIGHT = 3.0           # sends this long before a phase's end may still be on their way
 ROBOTS = {'r1': ['a1', 'a2'], 'r2': ['b1', 'b2']}
 PEER = {'a1': 'b1', 'a2': 'b2', 'b1': 'a1', 'b2': 'a2'}
@@ -101,7 +88,7 @@ def _play(hosts, log, marks, folder):
     core = hosts.run(MASTER_HOST, ['roscore', '-p', MASTER_PORT], env=envs[MASTER_HOST],
                      stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
     read_line(core, 60, 'started core service')
-    _drain(core, os.path.join(folder, 'roscore.out'))
+    drain(core, os.path.join(folder, 'roscore.out'))
     masses = []
     for robot in ROBOTS:
         mas = hosts.run(robot, [
