@@ -7,6 +7,7 @@ import rospy
 from rason_msgs.msg import AgentMessage, Presence
 
 from rason_bridge import ros_links, signed
+from rason_bridge.link_tuning import LinkTuner
 from rason_bridge.message_sender import HELD, MessageSender
 
 
@@ -26,12 +27,17 @@ class RosFleet(object):
         self._wake_held = wake_held
         self._message_pub = rospy.Publisher(s.messages_topic, AgentMessage, queue_size=1000, tcp_nodelay=True)
         self._presence_pub = rospy.Publisher(s.presence_topic, Presence, queue_size=10, tcp_nodelay=True)
+        self._links = LinkTuner(rospy.logwarn)
+        self._links.watch(self._message_pub)
+        self._links.watch(self._presence_pub)
+        _cache_rosout_setting()
         # signed when published, in publishing order, so the sequence numbers arrive increasing
         self.messages = MessageSender(publish=self._sign_and_publish,
                                       linked=lambda mas: ros_links.linked(self._message_pub, mas),
                                       connect_wait=s.connect_wait)
 
     def presence_tick(self):
+        self._links.tune()
         self._channel.presenceTick(ros_links.linked_processes(self._message_pub))
 
     def publish_presence(self, leaving):
@@ -59,3 +65,18 @@ class RosFleet(object):
         rospy.logwarn('[%s] %s to %s published although %s is still not connected after %.1f s: '
                       'it is probably lost', m.sender, m.performative, m.receiver, m.receiver_mas,
                       self._settings.connect_wait)
+
+
+#: rospy reads this parameter at every log line; while it is not set, rospy does not cache the
+#: answer and asks the master each time (a TCP connection per line): across a lossy link to the
+#: master's host, 40 lines took 7 to 34 s, and every thread that logs waits that long.
+ROSOUT_TOPICS_PARAM = '/rosout_disable_topics_generation'
+
+
+def _cache_rosout_setting():
+    """Set the parameter to its default (false) if nobody did, so that every node caches it."""
+    try:
+        if not rospy.has_param(ROSOUT_TOPICS_PARAM):
+            rospy.set_param(ROSOUT_TOPICS_PARAM, False)
+    except Exception as e:  # the master is unreachable: log lines still work, only slower
+        rospy.logwarn('could not set %s: %s', ROSOUT_TOPICS_PARAM, e)
