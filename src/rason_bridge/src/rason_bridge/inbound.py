@@ -1,7 +1,7 @@
 """ROS -> agents: the subscriptions of rason_mas, each message handed to Java as it comes
 (rospy plumbing; parsing and checking are Java's)."""
 import rospy
-from rason_msgs.msg import AgentMessage, Event, Perception, Presence
+from rason_msgs.msg import AgentMessage, Event, Perception, Presence, Pulse
 from rosgraph_msgs.msg import Clock
 
 from rason_bridge.fleet_auth import to_int64
@@ -28,10 +28,11 @@ class Inbound(object):
         self.events = rospy.Subscriber('jason/event', Event, self._on_event, queue_size=None, tcp_nodelay=True)
         rospy.Subscriber('jason/perception', Perception, self._on_perception, queue_size=100, tcp_nodelay=True)
 
-    def subscribe_fleet(self, messages_topic, presence_topic):
+    def subscribe_fleet(self, settings):
         """The fleet over ROS topics (not with ``fleet_channel: mqtt``, whose channel is Java's)."""
-        rospy.Subscriber(messages_topic, AgentMessage, self._on_message, queue_size=None, tcp_nodelay=True)
-        rospy.Subscriber(presence_topic, Presence, self._on_presence, queue_size=100, tcp_nodelay=True)
+        rospy.Subscriber(settings.messages_topic, AgentMessage, self._on_message, queue_size=None, tcp_nodelay=True)
+        rospy.Subscriber(settings.presence_topic, Presence, self._on_presence, queue_size=100, tcp_nodelay=True)
+        rospy.Subscriber(settings.pulse_topic, Pulse, self._on_pulse, queue_size=100, tcp_nodelay=True)
 
     def follow_clock(self, java_error):
         """Under /use_sim_time, Jason's .wait, .at, deadlines and .send timeouts follow /clock
@@ -81,3 +82,12 @@ class Inbound(object):
                                             to_int64(msg.stamp), msg.key_id, msg.mac, publisher(msg))
         except Exception as e:
             rospy.logerr('could not handle presence of %r: %s', msg.mas_id, e)
+
+    def _on_pulse(self, msg):
+        if msg.mas_id == self._mas_id:
+            return
+        try:
+            self._channel.pulseArrived(msg.mas_id, to_int64(msg.incarnation), to_int64(msg.sequence),
+                                       to_int64(msg.stamp), msg.key_id, msg.mac, publisher(msg))
+        except Exception as e:  # a bug must not kill the subscriber thread
+            rospy.logerr_throttle(10, 'could not handle a pulse of %r: %s', msg.mas_id, e)

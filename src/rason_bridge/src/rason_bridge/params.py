@@ -196,6 +196,8 @@ PARAMS = (
           'topic shared by all robots for agent messages', _text),
     Param('presence_topic', 'str', '/rason/presence', '', 'a topic name',
           'topic shared by all robots for presence', _text),
+    Param('pulse_topic', 'str', '/rason/pulse', '', 'a topic name',
+          'topic shared by all robots for pulses (signs of life on a connection apart from presence\'s)', _text),
     Param('presence_period', 'float', 0.5, 's (wall clock)', 'more than 0 s',
           'time between presence announcements', _seconds()),
     Param('presence_timeout', 'float', 2.0, 's (wall clock)', 'more than presence_period',

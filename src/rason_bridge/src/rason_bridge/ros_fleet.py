@@ -1,10 +1,11 @@
 """The Python half of the ROS-topic fleet channel (Java's ``RosTopicChannel``): publishes our
-agents' messages on ``messages_topic`` and our presence on ``presence_topic``, signed by Java in
+agents' messages on ``messages_topic``, our presence on ``presence_topic`` and our pulses on
+``pulse_topic``, signed by Java in
 publishing order, and tells Java which processes our message publisher reaches (rospy
 plumbing; what arrives is :mod:`rason_bridge.inbound`'s). With ``~fleet_channel: mqtt`` Java's
 MQTT channel does all of it and this part is not made."""
 import rospy
-from rason_msgs.msg import AgentMessage, Presence
+from rason_msgs.msg import AgentMessage, Presence, Pulse
 
 from rason_bridge import ros_links, signed
 from rason_bridge.link_tuning import LinkTuner
@@ -27,9 +28,11 @@ class RosFleet(object):
         self._wake_held = wake_held
         self._message_pub = rospy.Publisher(s.messages_topic, AgentMessage, queue_size=1000, tcp_nodelay=True)
         self._presence_pub = rospy.Publisher(s.presence_topic, Presence, queue_size=10, tcp_nodelay=True)
+        self._pulse_pub = rospy.Publisher(s.pulse_topic, Pulse, queue_size=10, tcp_nodelay=True)
         self._links = LinkTuner(rospy.logwarn)
         self._links.watch(self._message_pub)
         self._links.watch(self._presence_pub)
+        self._links.watch(self._pulse_pub)
         _cache_rosout_setting()
         # signed when published, in publishing order, so the sequence numbers arrive increasing
         self.messages = MessageSender(publish=self._sign_and_publish,
@@ -45,6 +48,8 @@ class RosFleet(object):
         try:
             self._presence_pub.publish(signed.presence(self._channel, self._agent_names(), self._mas_id,
                                                        self._settings.presence_period, leaving))
+            if not leaving:  # over a connection of its own: see docs/guides/fleet-channel.md, Pulses
+                self._pulse_pub.publish(signed.pulse(self._channel, self._mas_id))
         except Exception as e:  # topic closed at shutdown
             rospy.logdebug('presence not announced: %s', e)
 

@@ -1,6 +1,6 @@
-"""Presence announcements and agent messages signed by Java's fleet authentication
+"""Presence announcements, pulses and agent messages signed by Java's fleet authentication
 (through Java's ``RosTopicChannel``), as the ROS messages to publish; no rospy."""
-from rason_msgs.msg import Presence
+from rason_msgs.msg import Presence, Pulse
 
 from rason_bridge.fleet_auth import to_uint64
 
@@ -20,6 +20,13 @@ def presence(channel, agent_names, mas_id, period, leaving):
                     df_agents=df_agents, df_services=df_services, period=period, leaving=leaving,
                     sequence=to_uint64(signed.sequence()), stamp=to_uint64(signed.stamp()),
                     key_id=str(signed.keyId()), mac=bytes(signed.mac()))
+
+
+def pulse(channel, mas_id):
+    """Our next pulse, signed (in publishing order)."""
+    signed = channel.signPulse()
+    return Pulse(mas_id=mas_id, incarnation=to_uint64(signed.incarnation()), sequence=to_uint64(signed.sequence()),
+                 stamp=to_uint64(signed.stamp()), key_id=str(signed.keyId()), mac=bytes(signed.mac()))
 
 
 def sign_message(channel, msg):

@@ -7,7 +7,7 @@ import rason.messaging.FleetPort;
 import rason.messaging.WireMessage;
 
 /**
- * The fleet over ROS topics of one master (/rason/messages, /rason/presence): what the
+ * The fleet over ROS topics of one master (/rason/messages, /rason/presence, /rason/pulse): what the
  * agents send is queued in the {@link Outbox} for the node, which signs it here in
  * publishing order and publishes it; what the node's subscribers receive comes in here.
  */
@@ -55,6 +55,17 @@ public final class RosTopicChannel implements FleetChannel {
     public FleetAuth.Signed signPresence(String[] agents, String[] dfAgents, String[] dfServices, float period,
             boolean leaving) {
         return port.signPresence(agents, dfAgents, dfServices, period, leaving, "");
+    }
+
+    /** The authentication fields of the pulse the node is about to publish. */
+    public FleetAuth.Signed signPulse() {
+        return port.auth().signPulse(port.masId());
+    }
+
+    /** A rason_msgs/Pulse arrived: its fields as published, the uint64 ones as their bits. */
+    public void pulseArrived(String mas, long incarnation, long sequence, long stamp, String keyId, byte[] mac,
+            String publisher) {
+        port.fleet().pulseArrived(mas, new FleetAuth.Signed(incarnation, sequence, stamp, keyId, mac), publisher);
     }
 
     /**
