@@ -1,12 +1,13 @@
 """The rason_mas node's threads as plain parts, driven step by step without ROS or Java:
 perception pump, outbound pump, held flusher, presence loop, mind publisher, log pump."""
 import collections
+import itertools
 
 import pytest
 
 from rason_bridge.coalesce import PerceptionCoalescer
 from rason_bridge.held_flusher import HeldFlusher
-from rason_bridge.log_pump import LogPump, level_name
+from rason_bridge.log_pump import LogPump, batch_lines, level_name
 from rason_bridge.mind_publisher import MindPublisher
 from rason_bridge.outbound_pump import OutboundItems, OutboundPump
 from rason_bridge.perception_pump import SUMMARY_PERIOD, PerceptionPump
@@ -288,9 +289,22 @@ def test_java_log_levels(java_level, name):
     assert level_name(java_level) == name
 
 
-class Line(object):
-    def __init__(self, level, agent, message):
-        self.level, self.agent, self.message = (lambda: level), (lambda: agent), (lambda: message)
+class Batch(object):
+    """A LogQueue.Batch: levels, code-point ends and the lines' text."""
+
+    def __init__(self, lines):
+        self._levels = [level for level, _ in lines]
+        self._ends = list(itertools.accumulate(len(text) for _, text in lines))
+        self._text = ''.join(text for _, text in lines)
+
+    def levels(self):
+        return self._levels
+
+    def ends(self):
+        return self._ends
+
+    def text(self):
+        return self._text
 
 
 class Lines(object):
@@ -298,19 +312,24 @@ class Lines(object):
         self.queued = list(lines)
         self.dropped = dropped
 
-    def drain(self, most):
+    def drainBatch(self, most):
         taken, self.queued = self.queued[:most], self.queued[most:]
-        return taken
+        return Batch(taken)
 
     def takeDropped(self):
         dropped, self.dropped = self.dropped, 0
         return dropped
 
 
+def test_batch_lines_cuts_the_text_at_the_ends_with_each_level():
+    assert batch_lines(Batch([(800, '[bob] hé😀'), (1000, ''), (700, 'x')])) == [
+        ('info', '[bob] hé😀'), ('error', ''), ('debug', 'x')]
+
+
 def test_log_pump_writes_every_line_on_close_after_detaching():
     written, detached = [], []
-    lines = Lines([Line(800, 'bob', 'hello')] * 600 + [Line(1000, '', 'jason failed')], dropped=2)
-    LogPump(lines, lambda level, text: written.append((level, text))).close(lambda: detached.append(True))
+    lines = Lines([(800, '[bob] hello')] * 600 + [(1000, 'jason failed')], dropped=2)
+    LogPump(lines, written.extend).close(lambda: detached.append(True))
     assert detached == [True]
     assert written[0] == ('info', '[bob] hello') and written[-1] == ('error', 'jason failed')
     assert len([w for w in written if w[0] != 'warn']) == 601

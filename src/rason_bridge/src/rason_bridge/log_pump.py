@@ -1,6 +1,7 @@
 """The log pump: the thread that writes the agents' ``.print`` and Jason's log lines, queued
 on the Java side (``rason.core.LogQueue``), off the agents' threads, so printing never
-makes an agent wait for Python; no rospy."""
+makes an agent wait for Python; no rospy. It takes the queued lines in batches, each one
+call into Java, and writes each batch at once."""
 import threading
 
 #: How often the thread looks for queued lines (s), and how many it takes at once.
@@ -16,10 +17,27 @@ def level_name(java_level):
     return next((name for at_least, name in _LEVELS if java_level >= at_least), 'debug')
 
 
+def batch_lines(batch):
+    """``[(level_name, text), ...]`` of a ``LogQueue.Batch`` (levels, code-point ends, text)."""
+    levels, ends, text = _ints(batch.levels()), _ints(batch.ends()), str(batch.text())
+    lines, start = [], 0
+    for level, end in zip(levels, ends):
+        lines.append((level_name(level), text[start:end]))
+        start = end
+    return lines
+
+
+def _ints(array):
+    try:  # a Java int[] exposes its memory: read at once, not element by element through JPype
+        return memoryview(array).cast('B').cast('i').tolist()
+    except (TypeError, ValueError, NotImplementedError):
+        return [int(i) for i in array]
+
+
 class LogPump(object):
     """
-    :param lines: the Java ``LogQueue`` (``drain(max)``, ``takeDropped()``)
-    :param write: ``write(level_name, text)`` writes one line
+    :param lines: the Java ``LogQueue`` (``drainBatch(max)``, ``takeDropped()``)
+    :param write: ``write([(level_name, text), ...])`` writes lines in order
     """
 
     def __init__(self, lines, write):
@@ -44,12 +62,11 @@ class LogPump(object):
 
     def drain(self):
         """Writes the queued lines; returns how many there were."""
-        lines = self._lines.drain(BATCH)
-        for line in lines:
-            agent, message = str(line.agent()), str(line.message())
-            self._write(level_name(int(line.level())), '[%s] %s' % (agent, message) if agent else message)
+        lines = batch_lines(self._lines.drainBatch(BATCH))
         dropped = int(self._lines.takeDropped())
         if dropped:
-            self._write('warn', '%d log lines of the agents were dropped: they came faster than rosout took them'
-                        % dropped)
-        return len(lines)
+            lines.append(('warn', '%d log lines of the agents were dropped: they came faster than rosout took them'
+                          % dropped))
+        if lines:
+            self._write(lines)
+        return len(lines) - (1 if dropped else 0)

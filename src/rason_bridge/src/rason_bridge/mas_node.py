@@ -6,7 +6,7 @@ the ~params are in :mod:`rason_bridge.params` and reach Java through :mod:`rason
 the node's threads are the parts :mod:`~rason_bridge.perception_pump`,
 :mod:`~rason_bridge.outbound_pump`, :mod:`~rason_bridge.held_flusher`,
 :mod:`~rason_bridge.presence_loop`, :mod:`~rason_bridge.mind_publisher` and
-:mod:`~rason_bridge.log_pump`.
+:mod:`~rason_bridge.log_pump` (with :mod:`~rason_bridge.rosout_writer`).
 """
 import logging
 import os
@@ -36,12 +36,10 @@ from rason_bridge.params import MQTT, ParamError, read_settings
 from rason_bridge.perception_pump import PerceptionPump
 from rason_bridge.presence_loop import PresenceLoop
 from rason_bridge.project_classpath import project_classpath
+from rason_bridge.ros_log import rosout_writer
 from rason_bridge.ros_fleet import RosFleet
 from rason_bridge.source_watch import SourceWatch
 from rason_bridge.start_barrier import StartBarrier, hold
-
-_WRITE = {'error': rospy.logerr, 'warn': rospy.logwarn, 'info': rospy.loginfo, 'debug': rospy.logdebug}
-
 
 def _ros_now_ns():
     return rospy.get_rostime().to_nsec()
@@ -97,7 +95,7 @@ class RasonMasNode(object):
             publisher = rospy.Publisher('jason/mind', MindState, queue_size=2, latch=True)
             self._mind = MindPublisher(self._bridge.mind(), publisher, self.mas_id, s.mind_period, _ros_now_ns,
                                        rospy.ROSException, rospy.logdebug, alive=self._running)
-        self._log = LogPump(self._bridge.log(), lambda level, text: _WRITE[level](text))
+        self._log = LogPump(self._bridge.log(), rosout_writer().write)
         self._bridge.attach()  # the agents' outbox and log are ours from now on
         self._log.start()
 

@@ -17,6 +17,15 @@ public final class LogQueue {
     public record Line(int level, String agent, String message) {
     }
 
+    /**
+     * Lines taken at once, in one object so that the node crosses from Python to Java once
+     * per batch, not three times per line. Line i is the text from ends[i-1] to ends[i] (from 0
+     * for the first), counted in code points as Python indexes strings; it reads "[agent]
+     * message" (the message alone if no agent), at java.util.logging level {@code levels[i]}.
+     */
+    public record Batch(int[] levels, int[] ends, String text) {
+    }
+
     /** Lines kept while nobody drains; beyond this, the oldest are dropped (and counted). */
     public static final int MAX_QUEUED = 100_000;
 
@@ -56,6 +65,24 @@ public final class LogQueue {
             out.add(l);
         }
         return out.toArray(new Line[0]);
+    }
+
+    /** Takes up to max queued lines, oldest first, as one {@link Batch} (no lines: empty arrays). */
+    public Batch drainBatch(int max) {
+        Line[] lines = drain(max);
+        int[] levels = new int[lines.length];
+        int[] ends = new int[lines.length];
+        StringBuilder text = new StringBuilder();
+        for (int i = 0; i < lines.length; i++) {
+            Line l = lines[i];
+            int from = text.length();
+            if (!l.agent().isEmpty())
+                text.append('[').append(l.agent()).append("] ");
+            text.append(l.message());
+            levels[i] = l.level();
+            ends[i] = (i == 0 ? 0 : ends[i - 1]) + text.codePointCount(from, text.length());
+        }
+        return new Batch(levels, ends, text.toString());
     }
 
     /** Lines dropped because nobody drained them in time, since the last call. */

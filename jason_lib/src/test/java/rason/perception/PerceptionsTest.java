@@ -69,4 +69,12 @@ class PerceptionsTest {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> Perceptions.parse(null));
         assertEquals("empty perception", e.getMessage());
     }
+
+    @Test
+    void aRefusedTextLeavesTheThreadsParserReadyForTheNext() {
+        for (String bad : new String[] {"robot(", "robot(a) extra", "robot(@#)", "\"open"})
+            assertThrows(IllegalArgumentException.class, () -> Perceptions.parse(bad));
+        assertEquals("robot(a,[1,2],\"s\")[q(1)]", Perceptions.parse("robot(a, [1,2], \"s\")[q(1)]").toString());
+        assertEquals(jason.asSyntax.ASSyntax.createAtom("hot"), Perceptions.parse("hot"));
+    }
 }

@@ -1,0 +1,46 @@
+package rason.core;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import org.junit.jupiter.api.Test;
+
+class LogQueueTest {
+
+    private static LogQueue attached() {
+        LogQueue q = new LogQueue();
+        q.setAttached(true);
+        return q;
+    }
+
+    @Test
+    void aBatchHoldsTheLinesInOrderWithTheirLevelsAndAgents() {
+        LogQueue q = attached();
+        q.add(800, "bob", "hello");
+        q.add(1000, "", "jason failed");
+        q.add(900, "alice", "");
+        LogQueue.Batch b = q.drainBatch(10);
+        assertArrayEquals(new int[] {800, 1000, 900}, b.levels());
+        assertEquals("[bob] hellojason failed[alice] ", b.text());
+        assertArrayEquals(new int[] {11, 23, 31}, b.ends());
+        assertEquals(0, q.drainBatch(10).levels().length);
+    }
+
+    @Test
+    void endsCountCodePointsSoThatPythonSlicesTheSameLines() {
+        LogQueue q = attached();
+        q.add(800, "", "a\uD83D\uDE00b"); // one character outside the BMP: two Java chars, one code point
+        q.add(800, "", "c");
+        assertArrayEquals(new int[] {3, 4}, q.drainBatch(10).ends());
+    }
+
+    @Test
+    void aBatchTakesAtMostMaxLinesAndLeavesTheRest() {
+        LogQueue q = attached();
+        for (int i = 0; i < 5; i++)
+            q.add(800, "", "line" + i);
+        assertEquals(3, q.drainBatch(3).levels().length);
+        LogQueue.Batch rest = q.drainBatch(3);
+        assertEquals("line3line4", rest.text());
+    }
+}

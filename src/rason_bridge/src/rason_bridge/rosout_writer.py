@@ -1,0 +1,73 @@
+"""Writes batches of the agents' log lines where ``rospy.loginfo`` & co. would (the handlers
+of the ``rosout`` logger and of its ancestors: the screen and the node's log file; and
+/rosout), without rospy's costs per line: its search for the caller's frame, and the
+master's ``/rosout_disable_topics_generation`` parameter, which rospy asks the master for on
+every line while the parameter is unset (its cache keeps no "unset"); no rospy."""
+import logging
+import time
+
+#: How long a value of the parameter is used before it is asked again (s).
+PARAM_PERIOD = 1.0
+
+#: The level names of :func:`rason_bridge.log_pump.level_name` -> logging's levels.
+LEVELS = {'debug': logging.DEBUG, 'info': logging.INFO, 'warn': logging.WARNING, 'error': logging.ERROR}
+
+
+class RosoutWriter(object):
+    """
+    :param logger: the ``rosout`` logger: a line below its level is not written (as logging
+        does), the others go to its handlers and, while it propagates, to its ancestors'
+    :param rosout_handler: the class of rospy's handler that publishes to /rosout: it is
+        skipped, the line published here instead, while the logger has one
+    :param publish: ``publish(level_name, text, topics, record)`` publishes one /rosout message
+    :param topics: ``topics()`` -> the node's topics, which a rosout message carries
+    :param topics_disabled: ``topics_disabled()`` -> the parameter; asked at most every
+        :data:`PARAM_PERIOD` s (then rosout messages carry no topics)
+    """
+
+    def __init__(self, logger, rosout_handler, publish, topics, topics_disabled, clock=time.monotonic):
+        self._logger = logger
+        self._rosout_handler = rosout_handler
+        self._publish = publish
+        self._topics = topics
+        self._topics_disabled = topics_disabled
+        self._clock = clock
+        self._disabled, self._asked = False, None
+
+    def write(self, lines):
+        """Writes ``[(level_name, text), ...]`` in order."""
+        handlers, to_rosout = self._handlers()
+        topics = None
+        for level_name, text in lines:
+            level = LEVELS[level_name]
+            if not self._logger.isEnabledFor(level):
+                continue
+            record = logging.LogRecord(self._logger.name, level, __file__, 0, text, None, None, 'write')
+            for handler in handlers:
+                if level >= handler.level:
+                    handler.handle(record)
+            if to_rosout:
+                if topics is None:
+                    topics = '' if self._topics_off() else self._topics()
+                self._publish(level_name, text, topics, record)
+
+    def _handlers(self):
+        handlers, to_rosout, logger = [], False, self._logger
+        while logger:
+            for h in logger.handlers:
+                if isinstance(h, self._rosout_handler):
+                    to_rosout = True
+                else:
+                    handlers.append(h)
+            logger = logger.parent if logger.propagate else None
+        return handlers, to_rosout
+
+    def _topics_off(self):
+        now = self._clock()
+        if self._asked is None or now - self._asked >= PARAM_PERIOD:
+            self._asked = now
+            try:
+                self._disabled = bool(self._topics_disabled())
+            except Exception:  # the master is gone: the last value stands
+                pass
+        return self._disabled
