@@ -11,6 +11,7 @@ import signal
 import subprocess
 
 from rason_bridge.jvm import jason_lib_classpath
+from rason_testing import node_command
 
 #: Jason's own console logging configuration, inside its jar.
 JASON_LOG_CONF = '$jasonJar/templates/console-info-logging.properties'
@@ -46,7 +47,7 @@ def run_jason(mas2j, timeout, classpath=()):
 
 def run_rason_mas(mas2j, name, timeout, **params):
     """Run ``mas2j`` in a rason_mas named ``name`` (from ``/``) until it stops; ``params`` are its ~params."""
-    cmd = ['rosrun', 'rason_bridge', 'rason_mas', os.path.abspath(mas2j), '__name:=' + name]
+    cmd = node_command('rason_bridge', 'rason_mas') + [os.path.abspath(mas2j), '__name:=' + name]
     cmd += ['_%s:=%s' % item for item in sorted(params.items())]
     return _run(cmd, '/', timeout)
 

@@ -1,5 +1,6 @@
 """Helpers shared by the rostest scripts: waiting on a condition with a deadline, watching
 rosout, publishing feedback, and commanding and starting the agents of the multi-robot tests."""
+import functools
 import itertools
 import os
 import re
@@ -15,6 +16,18 @@ from rosgraph_msgs.msg import Log
 from rason_msgs.msg import AgentMessage, Event, Perception, Presence
 
 from fleet_wire import fleet_channel, fleet_params
+
+
+@functools.lru_cache(maxsize=None)
+def node_command(package, executable):
+    """The command that runs ``executable`` of ``package``, as ``rosrun package executable``
+    would: its file in the catkin workspace, looked up once per test process (rosrun looks it up
+    on every start, most of a second of CPU each time)."""
+    from catkin.find_in_workspaces import find_in_workspaces
+    found = find_in_workspaces(['libexec'], project=package, path=executable, first_match_only=True)
+    if not found or not os.access(found[0], os.X_OK):
+        raise RuntimeError('no executable %s in package %s (is the workspace built?)' % (executable, package))
+    return [found[0]]
 
 
 def poll(predicate, timeout, interval=0.02):
@@ -169,7 +182,7 @@ def run_refused_node(package, node, ns, name, param, value, timeout=60.0):
     """Runs a node whose ~param is value and that must refuse it: returns (exit status,
     its [FATAL] lines, all its output)."""
     rospy.set_param('/%s/%s/%s' % (ns, name, param), value)
-    proc = subprocess.Popen(['rosrun', package, node, '__ns:=/' + ns, '__name:=' + name],
+    proc = subprocess.Popen(node_command(package, node) + ['__ns:=/' + ns, '__name:=' + name],
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
     out, _ = proc.communicate(timeout=timeout)
     return proc.returncode, [line for line in out.splitlines() if line.startswith('[FATAL]')], out
@@ -182,9 +195,9 @@ def start_mas(ns, mas2j, output=None, cwd=None, **params):
     :param output: where its stdout and stderr go (e.g. ``subprocess.PIPE``); None: this process's
     :param cwd: its working directory (None: this process's)
     """
-    args = ['rosrun', 'rason_bridge', 'rason_mas', mas2j, '__ns:=/' + ns]
+    args = node_command('rason_bridge', 'rason_mas') + [mas2j, '__ns:=/' + ns]
     args += ['_%s:=%s' % (k, v) for k, v in dict(fleet_params(), **params).items()]
-    # rosrun execs the node, so the pid is the node's own (SIGKILL hits the JVM too)
+    # the node's own process (no rosrun shell in between): SIGKILL hits the JVM too
     return subprocess.Popen(args, stdout=output, stderr=subprocess.STDOUT if output else None,
                             universal_newlines=True, cwd=cwd)
 

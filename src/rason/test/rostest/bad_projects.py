@@ -14,13 +14,13 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
-from rason_testing import HERE, LogWatcher, stop_mas  # noqa: E402
+from rason_testing import HERE, LogWatcher, node_command, stop_mas  # noqa: E402
 
 BAD = os.path.join(HERE, 'agents', 'bad')
 
 
 def rason_mas(project, name, *params):
-    return subprocess.Popen(['rosrun', 'rason_bridge', 'rason_mas', os.path.join(BAD, project), '__name:=' + name]
+    return subprocess.Popen(node_command('rason_bridge', 'rason_mas') + [os.path.join(BAD, project), '__name:=' + name]
                             + list(params),
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
 

@@ -12,7 +12,7 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
-from rason_testing import HERE, LogWatcher, wait_for, wait_for_subscribers  # noqa: E402
+from rason_testing import HERE, LogWatcher, node_command, wait_for, wait_for_subscribers  # noqa: E402
 from rason_msgs.msg import Action, Perception  # noqa: E402
 
 
@@ -33,8 +33,8 @@ class TestShutdown(unittest.TestCase):
         # what an earlier method saw (even one that failed half-way) is not this one's
         del self.actions[:]
         self.log.clear()
-        proc = subprocess.Popen(['rosrun', 'rason_bridge', 'rason_mas',
-                                 os.path.join(HERE, 'agents', 'holder.mas2j'), '__name:=' + name])
+        proc = subprocess.Popen(node_command('rason_bridge', 'rason_mas') + [
+            os.path.join(HERE, 'agents', 'holder.mas2j'), '__name:=' + name])
         try:
             go = rospy.Publisher('jason/perception', Perception, queue_size=1, latch=True)
             self.assertTrue(wait_for_subscribers(go, timeout=30))

@@ -20,6 +20,7 @@ import rostest
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
 from fleet_wire import MQTT, fleet_channel, fleet_params  # noqa: E402
 from jason_runner import jason_command  # noqa: E402
+from rason_testing import node_command  # noqa: E402
 
 #: One line per program: its directory under test/conformance.
 PROGRAMS = [
@@ -101,8 +102,8 @@ class TestConformance(unittest.TestCase):
         self.assertIn(parts, (2, 3), '%s: part1.mas2j, part2.mas2j and maybe part3.mas2j' % program)
         jason = UNDER_JASON.get(program, {})
         runs = {
-            'whole': (['rosrun', 'rason_bridge', 'rason_mas', os.path.join(directory, 'whole.mas2j'),
-                       '__ns:=/conf_whole'], '/', outcome),
+            'whole': (node_command('rason_bridge', 'rason_mas') + [os.path.join(directory, 'whole.mas2j'),
+                                                                 '__ns:=/conf_whole'], '/', outcome),
             'split': (['roslaunch', os.path.join(CONFORMANCE, 'split.launch'), 'dir:=' + directory,
                        'parts:=%d' % parts] + ['%s:=%s' % item for item in fleet_params().items()], '/', outcome),
             'jason': jason_command(os.path.join(directory, 'whole.mas2j'))

@@ -12,7 +12,7 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
-from rason_testing import MULTI_AGENTS, LogWatcher, Robot, run, start_mas, stop_mas, wait_for  # noqa: E402
+from rason_testing import MULTI_AGENTS, LogWatcher, Robot, node_command, run, start_mas, stop_mas, wait_for  # noqa: E402
 
 ALL = 'names [r1_leader,r1_member,r2_leader,r2_member]'
 TEAM = os.path.join(MULTI_AGENTS, 'team.mas2j')
@@ -92,7 +92,7 @@ class TestNaming(unittest.TestCase):
                      '%s to name the four agents again' % agent, interval=0.2)
 
     def test_a_bad_prefix_stops_the_node_with_a_clear_message(self):
-        proc = subprocess.run(['rosrun', 'rason_bridge', 'rason_mas', TEAM, '__ns:=/robot4', '_agent_prefix:=R4-'],
+        proc = subprocess.run(node_command('rason_bridge', 'rason_mas') + [TEAM, '__ns:=/robot4', '_agent_prefix:=R4-'],
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=120)
         out = proc.stdout.decode(errors='replace')
         self.assertEqual(proc.returncode, 1, out)

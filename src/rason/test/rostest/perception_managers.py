@@ -14,7 +14,7 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
-from rason_testing import HERE, LogWatcher, wait_for_subscribers  # noqa: E402
+from rason_testing import HERE, LogWatcher, node_command, wait_for_subscribers  # noqa: E402
 from rason_msgs.msg import Perception  # noqa: E402
 
 AGENTS = os.path.join(HERE, 'agents', 'perception')
@@ -142,7 +142,7 @@ class TestPerceptionManagers(unittest.TestCase):
                  "agent 'oops': perception_manager: perception manager 'fancy' is neither per_source, accumulate"),
                 ([os.path.join(AGENTS, 'managers.mas2j'), '_perception_manager:=fancier'],
                  "perception_manager: perception manager 'fancier' is neither")):
-            proc = subprocess.run(['rosrun', 'rason_bridge', 'rason_mas'] + args + ['__ns:=/bad'],
+            proc = subprocess.run(node_command('rason_bridge', 'rason_mas') + args + ['__ns:=/bad'],
                                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=120)
             out = proc.stdout.decode(errors='replace')
             self.assertEqual(proc.returncode, 1, out)

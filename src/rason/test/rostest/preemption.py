@@ -15,7 +15,7 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
-from rason_testing import HERE, LogWatcher, start_mas, stop_mas  # noqa: E402
+from rason_testing import HERE, LogWatcher, node_command, start_mas, stop_mas  # noqa: E402
 from sim_testing import SimRobot  # noqa: E402
 from geometry_msgs.msg import PoseStamped  # noqa: E402
 from rason_msgs.msg import Action, Perception  # noqa: E402
@@ -95,8 +95,8 @@ class TestPreemption(unittest.TestCase):
     def setUp(self):
         self.robot.teleport(*START)
         self.decomposer = subprocess.Popen(
-            ['rosrun', 'motion_decomp', 'motion_decomp_node', '__ns:=/' + NS,
-             'cmd_vel:=cmd_vel_mux', 'odom:=odom_filtered'])
+            node_command('motion_decomp', 'motion_decomp_node') + [
+                '__ns:=/' + NS, 'cmd_vel:=cmd_vel_mux', 'odom:=odom_filtered'])
         self.mas = None
         self.percepts = []
 
