@@ -11,8 +11,7 @@ waits for the delivery receipt. Each robot's link loses frames in each direction
   (loss) 10 % loss for LOSS_SECONDS: every send ends, every message arrives exactly once, in
          order, except one refused before it was published (receiver_not_found, while the peer
          was dropped); a send may fail receiver_departed although its message arrived (a drop
-         while its receipt was on its way); that present/1 is never lost is asserted only with
-         RASON_ASSERT_PRESENCE_UNDER_LOSS=1, since it does not hold yet on this channel;
+         while its receipt was on its way); present/1 is never lost (pulses);
   (cut)  no loss (as in the MQTT acceptance; RASON_ROS_CUT_LOSS=10 to measure with loss), r2
          cut off for 5 s: every send since the end of (loss) is received or failed with a
          documented reason, never silently lost, and every agent gets a message of its peer
@@ -189,13 +188,8 @@ def test_10_percent_loss_never_drops_presence_nor_a_message(ros_run):
     problems += ['%s -> %s #%d received %d times' % (k[0], PEER[k[0]], k[1], seen.got_count[k]) for k in sorted(sent)
                  if seen.got_count[k] != 1 and 'receiver_not_found' not in seen.failures(k)]
     assert not problems, '\n'.join(problems[:40])
-    # Not met on the ROS channel (docs/guides/fleet-channel.md, the ROS channel across hosts): a
-    # TCP stall longer than presence_timeout still drops present/1 now and then at 10 % loss.
-    described = ['%s lost %s at +%.2f s' % (a, peer, t - marks['loss_start']) for a, peer, _, t in drops]
-    if os.environ.get('RASON_ASSERT_PRESENCE_UNDER_LOSS') == '1':
-        assert not drops, 'present/1 dropped: %s' % described
-    elif drops:
-        print('(loss) NOT MET: present/1 dropped %d times: %s' % (len(drops), described))
+    assert not drops, 'present/1 dropped: %s' % [
+        '%s lost %s at +%.2f s' % (a, peer, t - marks['loss_start']) for a, peer, _, t in drops]
 
 
 def test_messages_flow_again_within_5_s_of_the_heal_and_none_is_lost_silently(ros_run):
