@@ -1,5 +1,6 @@
 """Run planning: deterministic, jitter within bounds, interaction faults as launch args."""
 import math
+import re
 
 import pytest
 
@@ -219,5 +220,5 @@ def test_every_argument_a_run_passes_is_one_its_launch_file_declares(make, inter
 
 def test_the_launch_file_knows_the_same_interactions_as_the_plan():
     known = _declared_args('faulty_helper.launch')['interaction_is_known'].get('value')
-    listed = known[known.index('[') + 1:known.index(']')]
+    listed = re.search(r" in \(([^)]*)\)", known).group(1)   # str(interaction) in ('none', 'dim', ...)
     assert sorted(v.strip(" '") for v in listed.split(',')) == sorted(plan.INTERACTIONS)
