@@ -8,7 +8,7 @@ import jason.asSemantics.Message;
  * from that agent to the sender, in reply to the message's id, saying whether the agent
  * has it in its mailbox or its trust policy refused it. It never reaches Jason.
  */
-final class Receipts {
+public final class Receipts {
 
     static final String PERFORMATIVE = "rason_receipt";
     private static final String DELIVERED = "delivered";
@@ -22,13 +22,13 @@ final class Receipts {
     }
 
     /** Whether the sender waits for a receipt: a message to one agent that is not a receipt or a synchronous ask. */
-    static boolean wanted(WireMessage m) {
+    public static boolean wanted(WireMessage m) {
         return !m.receiver().isEmpty() && !isReceipt(m) && !m.msgId().isEmpty()
                 && !m.msgId().startsWith(Message.msgIdSyncAskPrefix);
     }
 
     /** The receipt of m from receiver, an agent of process ourMas. */
-    static WireMessage of(WireMessage m, String receiver, String ourMas, boolean refused) {
+    public static WireMessage of(WireMessage m, String receiver, String ourMas, boolean refused) {
         return new WireMessage(ourMas, receiver, m.senderMas(), m.sender(), PERFORMATIVE, refused ? REFUSED : DELIVERED,
                 "", m.msgId());
     }

@@ -23,13 +23,15 @@ import rason.core.Clock;
 import rason.core.RateLimitedLog;
 import rason.messaging.FleetAuth;
 import rason.messaging.FleetKeys;
+import rason.messaging.Receipts;
 import rason.messaging.WireMessage;
 
 /**
  * A light stand-in for a robot's rason_mas on the fleet's broker, for benchmarks: one MQTT 5
  * connection that announces one agent the way {@link MqttChannel} does (a signed, retained
  * presence every presence period over a connection named by a random link, a signed last will
- * of that link, the same keep-alive and reconnects, and pulses over a second one), sends signed agent messages and hands the
+ * of that link, the same keep-alive and reconnects, and pulses over a second one), sends
+ * receipts for what it is sent as rason_mas does, sends signed agent messages and hands the
  * messages that reach its inbox to a consumer. No Jason, no ROS: a hundred fit in one JVM.
  */
 public final class SimulatedRobot {
@@ -78,8 +80,11 @@ public final class SimulatedRobot {
                 new RateLimitedLog(java.util.logging.Logger.getLogger("rason.bench.simulated")));
         client.publishes(MqttGlobalPublishFilter.ALL, p -> {
             try {
-                if (MqttPayloads.decode(p.getPayloadAsBytes()) instanceof MqttPayloads.Message m)
+                if (MqttPayloads.decode(p.getPayloadAsBytes()) instanceof MqttPayloads.Message m) {
+                    if (Receipts.wanted(m.message())) // its sender waits for it, as from a rason_mas
+                        publishSigned(Receipts.of(m.message(), agent, masId, false));
                     received.accept(m.message());
+                }
             } catch (IllegalArgumentException e) {
                 // not one of ours: a benchmark robot ignores it
             }
@@ -147,7 +152,11 @@ public final class SimulatedRobot {
     /** A signed agent message from this robot's agent to receiver of receiverMas. */
     public CompletableFuture<?> send(String receiverMas, String receiver, String performative, String content,
             String msgId) {
-        WireMessage m = new WireMessage(masId, agent, receiverMas, receiver, performative, content, msgId, "");
+        return publishSigned(new WireMessage(masId, agent, receiverMas, receiver, performative, content, msgId, ""));
+    }
+
+    private CompletableFuture<?> publishSigned(WireMessage m) {
+        String receiverMas = m.receiverMas();
         synchronized (messageOrder) {
             FleetAuth.Signed signed = auth.sign(m);
             return client.publish(Mqtt5Publish.builder().topic(topics.inbox(receiverMas)).qos(MqttQos.AT_LEAST_ONCE)
