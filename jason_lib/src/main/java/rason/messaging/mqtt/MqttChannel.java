@@ -18,7 +18,6 @@ import com.hivemq.client.mqtt.MqttClientState;
 import com.hivemq.client.mqtt.MqttGlobalPublishFilter;
 import com.hivemq.client.mqtt.datatypes.MqttQos;
 import com.hivemq.client.mqtt.mqtt5.Mqtt5AsyncClient;
-import com.hivemq.client.mqtt.mqtt5.Mqtt5Client;
 import com.hivemq.client.mqtt.mqtt5.Mqtt5ClientBuilder;
 import com.hivemq.client.mqtt.mqtt5.lifecycle.Mqtt5ClientReconnector;
 import com.hivemq.client.mqtt.mqtt5.message.connect.Mqtt5Connect;
@@ -135,11 +134,7 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
         this.topics = new MqttTopics(settings.prefix());
         this.masId = port.masId();
         topics.inbox(masId); // a mas id that cannot name a topic fails here
-        Mqtt5ClientBuilder b = Mqtt5Client.builder().identifier(clientId(masId)).serverHost(settings.host())
-                .serverPort(settings.port()).automaticReconnect()
-                .initialDelay(RECONNECT_INITIAL_MS, TimeUnit.MILLISECONDS)
-                .maxDelay(RECONNECT_MAX_MS, TimeUnit.MILLISECONDS).applyAutomaticReconnect()
-                .addConnectedListener(c -> connected())
+        Mqtt5ClientBuilder b = MqttCredentials.client(settings, clientId(masId)).addConnectedListener(c -> connected())
                 .addDisconnectedListener(c -> {
                     if (c.getSource() != com.hivemq.client.mqtt.lifecycle.MqttDisconnectSource.USER)
                         limited.warn(LINK, "mqtt: " + clientId(masId) + " cannot connect to " + settings.url()
@@ -147,7 +142,7 @@ public final class MqttChannel implements FleetChannel, AutoCloseable {
                     // a reconnect is a new connection: a new link and will, and our session resumed
                     ((Mqtt5ClientReconnector) c.getReconnector()).connect(connectMessage(false));
                 });
-        client = MqttCredentials.apply(b, settings).buildAsync();
+        client = b.buildAsync();
         client.publishes(MqttGlobalPublishFilter.ALL, this::arrived);
         pulse = new MqttPulse(masId, port.auth(), port.fleet()::pulseArrived, clientId(masId), settings, topics, wall, limited);
         sender = new Thread(this::sendLoop, "rason-mqtt-send");

@@ -9,23 +9,30 @@ import java.security.GeneralSecurityException;
 import java.security.KeyStore;
 import java.security.cert.Certificate;
 import java.security.cert.CertificateFactory;
+import java.util.concurrent.TimeUnit;
 
 import javax.net.ssl.TrustManagerFactory;
 
+import com.hivemq.client.mqtt.mqtt5.Mqtt5Client;
 import com.hivemq.client.mqtt.mqtt5.Mqtt5ClientBuilder;
 
-/** The broker's credentials as the ~params give them: the CA certificates to trust, the password file. */
+/** The broker's credentials as the ~params give them (the CA certificates to trust, the password file), and a client that uses them. */
 final class MqttCredentials {
 
     private MqttCredentials() {
     }
 
     /**
-     * b with the TLS and the user name and password that settings ask for.
+     * A client of settings' broker named clientId, reconnecting with the channel's backoff, with
+     * the TLS and the user name and password that settings ask for.
      *
      * @throws IllegalArgumentException a CA or password file that cannot be read
      */
-    static Mqtt5ClientBuilder apply(Mqtt5ClientBuilder b, MqttSettings settings) {
+    static Mqtt5ClientBuilder client(MqttSettings settings, String clientId) {
+        Mqtt5ClientBuilder b = Mqtt5Client.builder().identifier(clientId).serverHost(settings.host())
+                .serverPort(settings.port()).automaticReconnect()
+                .initialDelay(MqttChannel.RECONNECT_INITIAL_MS, TimeUnit.MILLISECONDS)
+                .maxDelay(MqttChannel.RECONNECT_MAX_MS, TimeUnit.MILLISECONDS).applyAutomaticReconnect();
         if (settings.tls())
             b = b.sslConfig().trustManagerFactory(trust(settings.caFile())).applySslConfig();
         if (!settings.username().isEmpty())

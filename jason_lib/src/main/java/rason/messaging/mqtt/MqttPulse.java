@@ -8,7 +8,6 @@ import com.hivemq.client.mqtt.MqttGlobalPublishFilter;
 import com.hivemq.client.mqtt.datatypes.MqttQos;
 import com.hivemq.client.mqtt.lifecycle.MqttDisconnectSource;
 import com.hivemq.client.mqtt.mqtt5.Mqtt5AsyncClient;
-import com.hivemq.client.mqtt.mqtt5.Mqtt5Client;
 import com.hivemq.client.mqtt.mqtt5.message.publish.Mqtt5Publish;
 
 import rason.core.Clock;
@@ -48,7 +47,7 @@ final class MqttPulse {
     /**
      * @param auth signs our pulses
      * @param heard takes the pulses of others; null: ours are sent, others' not listened to
-     * @throws IllegalArgumentException the settings cannot be used (see {@link MqttCredentials#apply})
+     * @throws IllegalArgumentException the settings cannot be used (see {@link MqttCredentials#client})
      */
     MqttPulse(String masId, FleetAuth auth, Heard heard, String clientId, MqttSettings settings, MqttTopics topics,
             Clock wall, RateLimitedLog limited) {
@@ -59,16 +58,12 @@ final class MqttPulse {
         this.topics = topics;
         this.wall = wall;
         this.limited = limited;
-        client = MqttCredentials.apply(Mqtt5Client.builder().identifier(clientId + ".pulse")
-                .serverHost(settings.host()).serverPort(settings.port()).automaticReconnect()
-                .initialDelay(MqttChannel.RECONNECT_INITIAL_MS, TimeUnit.MILLISECONDS)
-                .maxDelay(MqttChannel.RECONNECT_MAX_MS, TimeUnit.MILLISECONDS).applyAutomaticReconnect()
-                .addConnectedListener(c -> subscribe()).addDisconnectedListener(c -> {
+        client = MqttCredentials.client(settings, clientId + ".pulse").addConnectedListener(c -> subscribe()).addDisconnectedListener(c -> {
                     subscribed = false;
                     if (c.getSource() != MqttDisconnectSource.USER)
                         limited.warn(MqttChannel.LINK, "mqtt: the pulse connection of " + clientId + " to "
                                 + settings.url() + " is down (" + c.getCause().getMessage() + "); retrying", wall.nanos());
-                }), settings).buildAsync();
+                }).buildAsync();
         client.publishes(MqttGlobalPublishFilter.ALL, this::arrived);
     }
 

@@ -12,7 +12,6 @@ import java.util.function.Consumer;
 import com.hivemq.client.mqtt.MqttGlobalPublishFilter;
 import com.hivemq.client.mqtt.datatypes.MqttQos;
 import com.hivemq.client.mqtt.mqtt5.Mqtt5AsyncClient;
-import com.hivemq.client.mqtt.mqtt5.Mqtt5Client;
 import com.hivemq.client.mqtt.mqtt5.lifecycle.Mqtt5ClientReconnector;
 import com.hivemq.client.mqtt.mqtt5.message.connect.Mqtt5Connect;
 import com.hivemq.client.mqtt.mqtt5.message.disconnect.Mqtt5DisconnectReasonCode;
@@ -69,11 +68,7 @@ public final class SimulatedRobot {
         auth.require(keys);
         auth.setIncarnation(FleetAuth.wallNanos());
         topics.inbox(masId); // a mas id that cannot name a topic fails here
-        client = Mqtt5Client.builder().identifier(MqttChannel.clientId(masId)).serverHost(settings.host())
-                .serverPort(settings.port()).automaticReconnect()
-                .initialDelay(MqttChannel.RECONNECT_INITIAL_MS, TimeUnit.MILLISECONDS)
-                .maxDelay(MqttChannel.RECONNECT_MAX_MS, TimeUnit.MILLISECONDS).applyAutomaticReconnect()
-                .addConnectedListener(c -> connected())
+        client = MqttCredentials.client(settings, MqttChannel.clientId(masId)).addConnectedListener(c -> connected())
                 .addDisconnectedListener(c -> ((Mqtt5ClientReconnector) c.getReconnector()).connect(connectMessage(false)))
                 .buildAsync();
         pulse = new MqttPulse(masId, auth, null, MqttChannel.clientId(masId), settings, topics, Clock.WALL,
