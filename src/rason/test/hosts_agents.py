@@ -12,6 +12,8 @@ import time
 
 import pytest
 
+from rason_hosts import Hosts
+
 
 def _workspace_built():
     return bool(shutil.which('rosrun')) and subprocess.run(
@@ -255,3 +257,25 @@ def stats(seen, keys):
     return 'sent %d (%s), received %d, failed %s, asks timed out %d' % (
         len(keys), ', '.join('%s %d' % kv for kv in sorted(kinds.items())), received,
         dict(failed) or 0, timeouts)
+
+
+Run = collections.namedtuple('Run', 'seen marks folder')
+
+
+def run_on_hosts(tmp_path_factory, name, host_names, play):
+    """play(hosts, log, marks, folder) on Hosts(host_names), what the agents print read into a
+    FleetLog and kept in a temporary folder named after name (also when play fails); returns
+    the Run, having printed where the logs are and when each phase began (marks, wall clock)."""
+    folder = str(tmp_path_factory.mktemp(name))
+    log = FleetLog()
+    marks = {'start': time.time()}
+    try:
+        with Hosts(host_names) as hosts:
+            play(hosts, log, marks, folder)
+            marks['end'] = time.time()
+        marks['closed'] = time.time()
+    finally:
+        log.save(folder)
+    print('\n%s: logs in %s; phases (s from start): %s' % (name, folder, ', '.join(
+        '%s %.1f' % (k, v - marks['start']) for k, v in sorted(marks.items(), key=lambda kv: kv[1]))))
+    return Run(log.seen, marks, folder)

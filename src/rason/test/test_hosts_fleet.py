@@ -20,16 +20,15 @@ Everything observed comes from what the agents print (agents/hosts/peer.asl): se
 outcomes, receptions (first step of +!kqml_received, so in the order messages reached Jason)
 and presence changes, stamped with the wall clock every host shares.
 """
-import collections
 import os
 import subprocess
 import time
 
 import pytest
 
-from rason_hosts import Hosts, read_line
+from rason_hosts import read_line
 
-from hosts_agents import NEEDS_HOSTS_AND_WORKSPACE, FleetLog, check_order, check_sends, drain, report, stats
+from hosts_agents import NEEDS_HOSTS_AND_WORKSPACE, run_on_hosts, check_order, check_sends, drain, report, stats
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 AGENTS_DIR = os.path.join(HERE, 'agents', 'hosts')
@@ -54,24 +53,9 @@ AGENTS = sorted(PEER)
 TOTAL_BURST = 1000
 
 
-Run = collections.namedtuple('Run', 'seen marks folder')
-
-
 @pytest.fixture(scope='module')
 def fleet_run(tmp_path_factory):
-    folder = str(tmp_path_factory.mktemp('hosts_fleet'))
-    log = FleetLog()
-    marks = {'start': time.time()}
-    try:
-        with Hosts(['broker', 'r1', 'r2']) as hosts:
-            _play(hosts, log, marks, folder)
-            marks['end'] = time.time()
-        marks['closed'] = time.time()
-    finally:
-        log.save(folder)
-    print('\nhosts_fleet: logs in %s; phases (s from start): %s' % (folder, ', '.join(
-        '%s %.1f' % (k, v - marks['start']) for k, v in sorted(marks.items(), key=lambda kv: kv[1]))))
-    return Run(log.seen, marks, folder)
+    return run_on_hosts(tmp_path_factory, 'hosts_fleet', ['broker', 'r1', 'r2'], _play)
 
 
 def _play(hosts, log, marks, folder):

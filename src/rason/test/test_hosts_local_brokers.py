@@ -13,16 +13,15 @@ c1 with d1 inside r1. Then r1 is cut off for PARTITION_SECONDS:
   session) and arrives after the heal: every message of the run reaches Jason exactly once, in
   order per pair, and no send fails.
 """
-import collections
 import os
 import subprocess
 import time
 
 import pytest
 
-from rason_hosts import Hosts, read_line
+from rason_hosts import read_line
 
-from hosts_agents import NEEDS_HOSTS_AND_WORKSPACE, FleetLog, check_order, check_sends, drain, report, stats
+from hosts_agents import NEEDS_HOSTS_AND_WORKSPACE, run_on_hosts, check_order, check_sends, drain, report, stats
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 AGENTS_DIR = os.path.join(HERE, 'agents', 'hosts')
@@ -100,21 +99,9 @@ def _play(hosts, log, marks, folder):
     marks['settled'] = time.time()
 
 
-Run = collections.namedtuple('Run', 'seen marks folder')
-
-
 @pytest.fixture(scope='module')
 def local_run(tmp_path_factory):
-    folder = str(tmp_path_factory.mktemp('hosts_local_brokers'))
-    log = FleetLog()
-    marks = {'start': time.time()}
-    try:
-        with Hosts(['broker', 'r1', 'r2']) as hosts:
-            _play(hosts, log, marks, folder)
-    finally:
-        log.save(folder)
-    print('\nhosts_local_brokers: logs in %s; %.1f s' % (folder, time.time() - marks['start']))
-    return Run(log.seen, marks, folder)
+    return run_on_hosts(tmp_path_factory, 'hosts_local_brokers', ['broker', 'r1', 'r2'], _play)
 
 
 def test_every_message_arrives_once_in_order_and_no_send_fails(local_run):

@@ -28,8 +28,8 @@ import time
 
 import pytest
 
-from rason_hosts import Hosts, read_line
-from hosts_agents import ALLOWED_FAILURES, NEEDS_HOSTS_AND_WORKSPACE, FleetLog, drain
+from rason_hosts import read_line
+from hosts_agents import ALLOWED_FAILURES, NEEDS_HOSTS_AND_WORKSPACE, drain, run_on_hosts
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 AGENTS_DIR = os.path.join(HERE, 'agents', 'hosts')
@@ -59,24 +59,9 @@ def _env(hosts, robot, folder):
     return env
 
 
-class Run:
-    def __init__(self, seen, marks, folder):
-        self.seen, self.marks, self.folder = seen, marks, folder
-
-
 @pytest.fixture(scope='module')
 def ros_run(tmp_path_factory):
-    folder = str(tmp_path_factory.mktemp('hosts_ros_channel'))
-    log = FleetLog()
-    marks = {'start': time.time()}
-    try:
-        with Hosts(list(ROBOTS)) as hosts:
-            _play(hosts, log, marks, folder)
-    finally:
-        log.save(folder)
-    print('\nhosts_ros_channel: logs in %s; phases (s from start): %s' % (folder, ', '.join(
-        '%s %.1f' % (k, v - marks['start']) for k, v in sorted(marks.items(), key=lambda kv: kv[1]))))
-    return Run(log.seen, marks, folder)
+    return run_on_hosts(tmp_path_factory, 'hosts_ros_channel', list(ROBOTS), _play)
 
 
 def _play(hosts, log, marks, folder):
