@@ -91,6 +91,14 @@ helpTimeout(120000).
 +!askForHelp
 <- !conclude(undiagnosed, "no other robot to ask for help").
 
+// IMPROVED: a robot out of reach while I wait for help (robots on hosts of their own: a
+// broken link) is noticed; what I send it waits in the fleet channel until it is back, or
+// fails with a reason, and helpTimeout bounds the whole wait.
+-present(R) : reason(_) & not diagnosed(_)
+<- .print(R, " is out of reach; what I send it waits until it is back").
++present(R) : reason(_) & not diagnosed(_)
+<- .print(R, " is back in reach").
+
 // IMPROVED: the help may never come (helper lost, perception lost, ...). A move still
 // running for the helper stops with it (the bridge cancels it: no motion outlives its goal).
 +!helpWatchdog : helpTimeout(T)

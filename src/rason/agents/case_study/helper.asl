@@ -15,6 +15,7 @@ centerThreshold(7).
 maxCentringTurns(4).
 centringTurnsSoFar(N) :- centringTurns(N).
 centringTurnsSoFar(0) :- not centringTurns(_).
+partnerGrace(15000).   // IMPROVED: ms I go on helping a robot out of reach (see -present)
 settleTime(400).       // FIX: ms for the robots to stop and fresh frames to arrive
 
 // FIX: on a busy CPU the camera -> synthesizer -> belief pipeline can lag the robots by
@@ -97,9 +98,21 @@ halfTurn(D, D) :- D > -180 & D <= 180.
   .print("helper ready.");
   .send(R,tell,found(R)).
 
-// IMPROVED: the robot asking for help left (its agents stopped, or it is gone): stop
-// searching for it or tracking it; a turn under way stops at once (the bridge cancels it).
--present(R) : helping(R)
+// IMPROVED: the robot asking for help is out of reach. It may only be behind a broken
+// link (robots on hosts of their own): what I send it meanwhile waits in the fleet channel
+// and arrives if it comes back (each send ends by its receipt), so I go on for up to
+// partnerGrace ms. If it is not back by then it left (its agents stopped, or it is gone):
+// I stop searching for it or tracking it; a turn under way stops at once (the bridge
+// cancels it).
+
+-present(R) : helping(R) <- !awaitReturn(R).
+
++!awaitReturn(R) : partnerGrace(G)
+<- .print(R, " is out of reach; I go on helping it for up to ", G / 1000, " s");
+  .wait(present(R), G);
+  .print(R, " is back in reach").
+
+-!awaitReturn(R) : helping(R) & not present(R)
 <- .print(R, " left; I stop helping it");
   .drop_desire(helpme);
   .drop_desire(trackMe);
@@ -108,6 +121,7 @@ halfTurn(D, D) :- D > -180 & D <= 180.
   -foundRobot(R,_,_,_);
   -viewpoint(_,_,_);
   -lastSeen(R,_).
+-!awaitReturn(_) <- true.
 
 // IMPROVED: say so when the robot was not found, instead of searching for ever.
 -!helpme[source(R)]
