@@ -33,10 +33,11 @@ ROSENV := set +u; source $(CURDIR)/devel/setup.bash; set -u;
 # The fleet key of every rason_mas started through make (its default place under ROS_HOME).
 FLEET_KEY := $(ROS_HOME)/rason/fleet.key
 
-.PHONY: help setup apt jason_lib catkin test docs javatest unit rostest demo bench rate-check rviz clean
+.PHONY: help setup apt jason_lib catkin test docs javatest unit rostest demo demo-hosts bench rate-check rviz clean
 
 help:
 	@echo "make demo   - set up, then run the case study (both actuators faulty) in the simulator"
+	@echo "make demo-hosts - the same with each robot on a host of its own (network namespaces, MQTT, 20 % loss; root)"
 	@echo "make test   - set up, then build the docs and run unit tests (JUnit, pytest) and rostests"
 	@echo "make docs   - build the documentation site (docs/ -> build/site), failing on broken links"
 	@echo "make setup  - install Debian packages, build jason_lib (Maven) and the catkin workspace, make a fleet key"
@@ -95,6 +96,11 @@ rostest:
 
 demo: setup
 	$(ROSENV) rosrun rason run_launch rason faulty_helper.launch fault:=both_actuators
+
+# Faulty and Helper each with its own ROS master on a network host of its own, over MQTT on
+# a lossy, slow link, one simulated world (docs/guides/hosts.md); needs root.
+demo-hosts: setup
+	$(ROSENV) rosrun rason hosts case-study --fault both_actuators --loss 20 --delay-ms 100
 
 # The case study at real-time factor 1 and 0 (two campaign runs, about 40 s): same diagnosis,
 # steps within 10 %. Part of make test too; this runs it alone.
