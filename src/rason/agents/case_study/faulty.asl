@@ -134,11 +134,11 @@ helpTimeout(120000).
 -!tryMove[source(R) | Annotations]
 : .member(Reason, [no_progress, bad_move]) & .member(Reason, Annotations)
 <- .print(" requesting some feedback from ",R);
-    .send(R,achieve,giveFeedback).
+    !sendSafely(R,achieve,giveFeedback).
 
 -!tryMove[source(R) | Annotations]
 <- .print("The move for ", R, " failed otherwise: ", Annotations);
-    .send(R,achieve,thanks);
+    !sendSafely(R,achieve,thanks);
     !conclude(undiagnosed, "the move watched by the helper failed without no_progress or bad_move").
 
 +found(Me)[source(R)]
@@ -230,3 +230,9 @@ helpTimeout(120000).
     .stopMAS.
 
 { include("faulty_recovery.asl") }
+
+// IMPROVED: a failure plan sends through sendSafely, which cannot fail: Jason runs a failure
+// plan that fails again when its goal is the first of the intention (e.g. a message to a
+// robot that left makes .send fail), over and over, and the plan's later steps never run.
++!sendSafely(R, Performative, Content) <- .send(R, Performative, Content).
+-!sendSafely(R, Performative, Content) <- .print("could not send ", Content, " to ", R).

@@ -112,7 +112,7 @@ curvatureSeen(K)
     !missionOver(true, [Me], guided, odometry).
 +!beGuided <- !missionOver(false, [], guided, odometry).
 -!beGuided : helpedBy(H)
-<- .send(H, achieve, stopGuiding);
+<- !sendSafely(H, achieve, stopGuiding);
     !missionOver(false, [], guided, odometry).
 
 /* Execute: delegate the mission with a contract net when I cannot move */

@@ -127,7 +127,7 @@ halfTurn(D, D) :- D > -180 & D <= 180.
 -!helpme[source(R)]
   <- .print("I could not find ", R);
   -helping(R);
-  .send(R,tell,notFound(R)).
+  !sendSafely(R,tell,notFound(R)).
 
 +!findRobot(Robot,Turned)
 : math.abs(Turned) >= 360
@@ -188,7 +188,7 @@ halfTurn(D, D) :- D > -180 & D <= 180.
   .send(R,achieve,tryMove).
 
 -!trackMe[source(R)]
-<- .send(R,achieve,noFeedback("the helper lost sight of the robot before it moved")).
+<- !sendSafely(R,achieve,noFeedback("the helper lost sight of the robot before it moved")).
 
 +!giveFeedback[source(R)]
 : helping(R)
@@ -207,7 +207,7 @@ halfTurn(D, D) :- D > -180 & D <= 180.
 
 +!lostSight(R)
 <- .print("I cannot see ", R, " (steadily) any more");
-  .send(R,achieve,noFeedback("the helper lost sight of the robot after it moved")).
+  !sendSafely(R,achieve,noFeedback("the helper lost sight of the robot after it moved")).
 
 // Where I stand when I first see R steadily: the view the reports are in (pos/3).
 +!noteViewpoint : pos(X,Y,T) <- -+viewpoint(X,Y,T).
@@ -322,3 +322,9 @@ halfTurn(D, D) :- D > -180 & D <= 180.
 // above act on positions no longer seen. Perceptions alone are used.
 
 { include("helper_recovery.asl") }
+
+// IMPROVED: a failure plan sends through sendSafely, which cannot fail: Jason runs a failure
+// plan that fails again when its goal is the first of the intention (e.g. a message to a
+// robot that left makes .send fail), over and over, and the plan's later steps never run.
++!sendSafely(R, Performative, Content) <- .send(R, Performative, Content).
+-!sendSafely(R, Performative, Content) <- .print("could not send ", Content, " to ", R).

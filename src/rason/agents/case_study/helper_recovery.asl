@@ -73,4 +73,4 @@ sideOf(L, -1) :- L < 0.
     .send(R, tell, done(Task)).
 -!takeOver(Task, R)
 <- .print("I could not do the mission of ", R);
-    .send(R, tell, failure(Task)).
+    !sendSafely(R, tell, failure(Task)).
