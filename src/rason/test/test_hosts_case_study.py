@@ -90,15 +90,21 @@ def test_partition_during_the_search_is_noticed_and_the_dialogue_resumes(tmp_pat
     outcome = _play(tmp_path, after=after, fault='both_actuators', partition=PARTITION)
     lines, marks = outcome.transcript, outcome.marks
     cut, healed = marks['cut'], marks['cut'] + PARTITION
+    timings = []
     for robot, other in (('helper', 'faulty'), ('faulty', 'helper')):
         noticed = lines.first(re.compile(r'\[%s\] %s is out of reach' % (robot, other)), since=cut)
         assert noticed, '%s never said %s was out of reach:\n%s' % (robot, other, lines.tail(60))
         assert noticed[0] < healed + 3, '%s noticed only %.1f s after the cut' % (robot, noticed[0] - cut)
+        back = lines.first(re.compile(r'\[%s\] %s is back in reach' % (robot, other)), since=cut)
+        timings.append('%s noticed the cut in %.1f s%s' % (robot, noticed[0] - cut, '' if not back else
+                                                         ', saw %s back %.1f s after the heal' % (other, back[0] - healed)))
     # the dialogue resumes: a step of it after the heal
     resumed = lines.first(re.compile(r'\[(faulty|helper)\] (helper found me|I\'m ready|Trying to move'
                                      r'|reporting to|.*requesting some feedback|fault in|Diagnosis)'),
                           since=healed)
     assert resumed, 'no step of the dialogue after the heal:\n%s' % lines.tail(60)
+    print('\npartition of %.0f s: %s; the dialogue resumed %.1f s after the heal (%s)'
+          % (PARTITION, '; '.join(timings), resumed[0] - healed, resumed[2].split('] ', 1)[-1]))
     component, evidence = outcome.diagnosis
     assert component in ('both_actuators', 'undiagnosed'), outcome.diagnosis
     assert evidence, 'a diagnosis without its reason'

@@ -22,6 +22,7 @@ from .hosts import HostsError, read_line
 HOST_NAMES = ['broker', 'world', 'faulty', 'helper']
 ROBOTS = ('faulty', 'helper')
 BROKER_PORT = 1883
+CASE_STUDY_FAULTY_YAW = -1.5708   # faulty_helper.launch's faulty_yaw
 MISSION_LENGTH = 1.0      # m ahead of Faulty's start: the thesis's mission
 DIAGNOSIS = re.compile(r'\[faulty\] Diagnosis: (\w+) \((.*)\)')
 MISSION = re.compile(r'\[faulty\] Mission completed: (\w+) by \[?([\w, ]*)\]? \(recovery (\w+)\)')
@@ -165,13 +166,14 @@ class CaseStudyOnHosts:
         # a short path of its own: a Unix socket's path has at most 107 bytes
         sockets = tempfile.mkdtemp(prefix='rason_sim_link_')
         try:
-            return self._play(key, sockets)
+            return self._play(url, key, sockets)
         finally:
             shutil.rmtree(sockets, ignore_errors=True)
 
-    def _play(self, key, sockets):
+    def _play(self, url, key, sockets):
+        # the case study's world: faulty_helper.launch's poses (Faulty facing away from Helper)
         self._launch('world', ['sim_world.launch', 'rate:=%s' % self.rate, 'seed:=%d' % self.seed,
-                               'socket_dir:=%s' % sockets])
+                               'faulty_yaw:=%s' % CASE_STUDY_FAULTY_YAW, 'socket_dir:=%s' % sockets])
         for robot in ROBOTS:
             poses = self.hosts.run('world', ['rostopic', 'echo', '-p', '/%s/true_pose' % robot],
                                    env=self._envs['world'], stdout=subprocess.PIPE,
