@@ -10,7 +10,8 @@ from rason_tools import launch_args
 from rason_tools.launch_args import REGENERATE, REPOSITORY, launch_files, page
 
 PAGE = os.path.join(REPOSITORY, 'docs', 'reference', 'launch-args.md')
-TRULY_REQUIRED = {('robot.launch', 'ns'), ('case_study_robot.launch', 'role'), ('robot_host.launch', 'robot')}
+TRULY_REQUIRED = {('robot.launch', 'ns'), ('case_study_robot.launch', 'role'), ('robot_host.launch', 'robot'),
+                  ('sim_link.launch', 'robot')}
 
 
 def test_the_committed_page_is_what_the_launch_files_make():

@@ -33,9 +33,14 @@ def refusal(launch, *args):
     ('fault_tolerance.launch', 'rate:=fast', "'rate:=fast: the real-time factor"),
     ('robot.launch', 'fault_at:=soon', "'fault_at:=soon: a number of seconds, 0 or more"),
     ('robot.launch', 'output:=loud', "'output:=loud is not known: screen or log'"),
+    ('sim_world.launch', 'rate:=fast', "'rate:=fast: the real-time factor"),
+    ('sim_world.launch', 'robots:=2fast', "'robots:=2fast: one or more distinct robot names"),
+    ('sim_world.launch', 'robots:=rover rover', "'robots:=rover rover: one or more distinct"),
+    ('sim_world.launch', 'socket_dir:=links', "'socket_dir:=links: an absolute path, or default'"),
+    ('sim_link.launch', 'socket:=rover.sock', "'socket:=rover.sock: an absolute path, or default'"),
 ])
 def test_a_bad_value_stops_the_launch_naming_the_valid_ones(launch, arg, says):
-    args = [arg] + (['ns:=r1'] if launch == 'robot.launch' else [])
+    args = [arg] + {'robot.launch': ['ns:=r1'], 'sim_link.launch': ['robot:=rover']}.get(launch, [])
     assert 'Invalid <arg> tag: ' + says in refusal(launch, *args)
 
 
@@ -50,6 +55,17 @@ def test_good_values_pass():
         [(path, ['fault:=left_actuator', 'rate:=0', 'severity:=0.5', 'lockstep:=true', 'fleet_auth:=off'])], None,
         verbose=False)
     assert {n.namespace for n in config.nodes} >= {'/faulty/', '/helper/'}
+
+
+def test_sim_world_links_each_robot_on_its_own_socket():
+    path = os.path.join(PACKAGE, 'launch', 'sim_world.launch')
+    config = roslaunch.config.load_config_default(
+        [(path, ['robots:=helper faulty', 'socket_dir:=/tmp/links'])], None, verbose=False)
+    links = sorted(n.namespace for n in config.nodes if n.type == 'sim_link')
+    assert links == ['/faulty/', '/helper/']
+    assert config.params['/helper/sim_link/socket'].value == '/tmp/links/helper.sock'
+    assert config.params['/faulty/sim_link/side'].value == 'world'
+    assert config.params['/use_sim_time'].value is True
 
 
 def test_an_undeclared_arg_is_refused_naming_close_ones_or_all():
