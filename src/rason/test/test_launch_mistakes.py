@@ -9,6 +9,7 @@ import pytest
 roslaunch = pytest.importorskip('roslaunch')
 pytest.importorskip('rospkg').RosPack().get_path('rason')   # $(find rason) must resolve
 from rason_tools.launch_args import PACKAGE  # noqa: E402
+from rason_tools.launch_config import line, node_line  # noqa: E402
 from rason_tools.run_launch import configuration, last_fatal_line, undeclared_args  # noqa: E402
 
 
@@ -89,3 +90,39 @@ def test_robot_launch_hands_the_expected_sources_to_rason_mas():
     assert config.params['/r1/rason_mas/expected_sources'].value == ['battery', 'pose']
     config = roslaunch.config.load_config_default([(path, ['ns:=r1', 'mas:=/x/a.mas2j'])], None, verbose=False)
     assert '/r1/rason_mas/expected_sources' not in config.params
+
+
+def configuration_lines(launch, *args):
+    """The lines the launch's launch_config nodes print first under plain roslaunch, in start order."""
+    path = os.path.join(PACKAGE, 'launch', launch)
+    config = roslaunch.config.load_config_default([(path, list(args))], None, verbose=False)
+    return [node_line(n.args) for n in config.nodes if (n.package, n.type) == ('rason', 'launch_config')]
+
+
+def test_plain_roslaunch_shows_the_effective_configuration_first():
+    for launch in ('faulty_helper.launch', 'fault_tolerance.launch', 'demo.launch'):
+        path = os.path.join(PACKAGE, 'launch', launch)
+        first = roslaunch.config.load_config_default([(path, [])], None, verbose=False).nodes[0]
+        assert (first.package, first.type) == ('rason', 'launch_config'), launch
+    agents = os.path.join(PACKAGE, 'agents', 'case_study')
+    world = pytest.importorskip('rospkg').RosPack().get_path('rason_sim') + '/config/two_robots.yaml'
+    # fualt:= is misspelt: roslaunch ignores it, and the default fault shows
+    assert configuration_lines('faulty_helper.launch', 'fualt:=left_actuator', 'rate:=2') == [
+        '[configuration] sim.launch: world %s (robots helper, faulty), rate 2, seed 1, lockstep auto' % world,
+        '[configuration] robot.launch: namespace /helper/, program %s/helper.mas2j, wiring %s/perceptions.yaml, '
+        'fault none, camera true' % (agents, agents),
+        '[configuration] robot.launch: namespace /faulty/, program %s/faulty.mas2j, wiring none, '
+        'fault both_actuators, camera false' % agents]
+    assert configuration_lines('fault_tolerance.launch', 'fault:=odometry')[2] == (
+        '[configuration] robot.launch: namespace /faulty/, program %s/faulty_mission.mas2j, wiring %s/perceptions.yaml, '
+        'fault odometry, camera false' % (agents, agents))
+    assert configuration_lines('robot.launch', 'ns:=r1') == [
+        '[configuration] robot.launch: namespace /r1/, program none, wiring none, fault none, camera false']
+    assert configuration_lines('demo.launch') == [
+        '[configuration] demo.launch: program %s/agents/demo/demo.mas2j, robot fake_robot' % PACKAGE]
+
+
+def test_a_configuration_line_names_a_world_s_robots_or_that_it_cannot_be_read():
+    assert line(['sim.launch', 'world=/nonexistent.yaml', 'rate=1', '__name:=c', '__log:=/x.log']) == (
+        '[configuration] sim.launch: world /nonexistent.yaml (cannot be read), rate 1')
+    assert line(['robot.launch', 'wiring=']) == '[configuration] robot.launch: wiring (empty)'
