@@ -111,14 +111,14 @@ def test_plain_roslaunch_shows_the_effective_configuration_first():
     assert configuration_lines('faulty_helper.launch', 'fualt:=left_actuator', 'rate:=2') == [
         '[configuration] sim.launch: world %s (robots helper, faulty), rate 2, seed 1, lockstep auto' % world,
         '[configuration] robot.launch: namespace /helper/, program %s/helper.mas2j, wiring %s/perceptions.yaml, '
-        'fault none, camera true, profile sim' % (agents, agents),
+        'fault none, camera true, profile sim, fleet ros' % (agents, agents),
         '[configuration] robot.launch: namespace /faulty/, program %s/faulty.mas2j, wiring none, '
-        'fault both_actuators, camera false, profile sim' % agents]
+        'fault both_actuators, camera false, profile sim, fleet ros' % agents]
     assert configuration_lines('fault_tolerance.launch', 'fault:=odometry')[2] == (
         '[configuration] robot.launch: namespace /faulty/, program %s/faulty_mission.mas2j, wiring %s/perceptions.yaml, '
-        'fault odometry, camera false, profile sim' % (agents, agents))
+        'fault odometry, camera false, profile sim, fleet ros' % (agents, agents))
     assert configuration_lines('robot.launch', 'ns:=r1') == [
-        '[configuration] robot.launch: namespace /r1/, program none, wiring none, fault none, camera false, profile sim']
+        '[configuration] robot.launch: namespace /r1/, program none, wiring none, fault none, camera false, profile sim, fleet ros']
     assert configuration_lines('demo.launch') == [
         '[configuration] demo.launch: program %s/agents/demo/demo.mas2j, robot fake_robot' % PACKAGE]
 

@@ -55,7 +55,7 @@ class TestLoudMistakes(unittest.TestCase):
         self.assertTrue(lines[first + 1].startswith('  /loud1/: ') and 'generic_synthesizer' in lines[first + 1],
                         lines[first + 1])
         self.assertEqual(lines[first + 2], '[configuration] robot.launch: namespace /loud1/, program none, wiring %s, '
-                                           'fault none, camera false, profile sim' % WRAPPED)
+                                           'fault none, camera false, profile sim, fleet ros' % WRAPPED)
         self.assertNotIn('process[', '\n'.join(lines[:first]))
         self.assertEqual(lines[-2], 'run_launch: loud1/generic_synthesizer failed (exit status 1): '
                                     'the launch is shut down')
@@ -76,7 +76,7 @@ class TestLoudMistakes(unittest.TestCase):
         self.assertIn(fatal('loud2'), launch.stdout)
         # the configuration line, before the node that fails says anything
         shown = ('[configuration] robot.launch: namespace /loud2/, program none, wiring %s, fault none, '
-                 'camera false, profile sim' % WRAPPED)
+                 'camera false, profile sim, fleet ros' % WRAPPED)
         self.assertIn(shown, launch.stdout)
         self.assertLess(launch.stdout.index(shown), launch.stdout.index(fatal('loud2')))
         self.assertRegex(launch.stdout, r'REQUIRED process \[loud2/generic_synthesizer-\d+\] has died!')
