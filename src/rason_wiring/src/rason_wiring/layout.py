@@ -51,8 +51,9 @@ def missing(key, node, namespace, names):
     looked = '~%s is not set (looked for %s' % (key, _join(private, key))
     wrappers = _holders(key, private, names)
     if wrappers:        # a wrapped file loaded into the node: ~generic_synthesizer/perceptions
-        top = sorted({_parts(n)[len(_parts(private))] for n in names
-                      if _parts(n)[:len(_parts(private))] == _parts(private) and len(_parts(n)) > len(_parts(private))})
+        depth = len(_parts(private))
+        top = sorted({_parts(n)[depth] for n in names
+                      if _parts(n)[:depth] == _parts(private) and len(_parts(n)) > depth})
         return ('%s, found %s): the wiring file loaded into this node has `%s:` at its top level (its top-level '
                 'keys: %s), the layout for loading into the robot\'s namespace, as patrol.launch loads '
                 'agents/patrol/wiring.yaml; a file given as %s needs `%s:` at its top level: remove the `%s:` '
