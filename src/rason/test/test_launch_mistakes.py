@@ -9,6 +9,8 @@ import pytest
 roslaunch = pytest.importorskip('roslaunch')
 pytest.importorskip('rospkg').RosPack().get_path('rason')   # $(find rason) must resolve
 from rason_tools.launch_args import PACKAGE  # noqa: E402
+from rason_tools.launch_config import line, node_line  # noqa: E402
+import rosgraph.names as rosgraph_names  # noqa: E402
 from rason_tools.run_launch import configuration, last_fatal_line, undeclared_args  # noqa: E402
 
 
@@ -105,3 +107,68 @@ def test_robot_launch_hands_the_expected_sources_to_rason_mas():
     assert config.params['/r1/rason_mas/expected_sources'].value == ['battery', 'pose']
     config = roslaunch.config.load_config_default([(path, ['ns:=r1', 'mas:=/x/a.mas2j'])], None, verbose=False)
     assert '/r1/rason_mas/expected_sources' not in config.params
+
+
+def configuration_lines(launch, *args):
+    """The lines the launch's launch_config nodes print first under plain roslaunch, in start order."""
+    path = os.path.join(PACKAGE, 'launch', launch)
+    config = roslaunch.config.load_config_default([(path, list(args))], None, verbose=False)
+    return [node_line(n.args) for n in config.nodes if (n.package, n.type) == ('rason', 'launch_config')]
+
+
+def test_plain_roslaunch_shows_the_effective_configuration_first():
+    for launch in ('faulty_helper.launch', 'fault_tolerance.launch', 'demo.launch'):
+        path = os.path.join(PACKAGE, 'launch', launch)
+        first = roslaunch.config.load_config_default([(path, [])], None, verbose=False).nodes[0]
+        assert (first.package, first.type) == ('rason', 'launch_config'), launch
+    agents = os.path.join(PACKAGE, 'agents', 'case_study')
+    world = pytest.importorskip('rospkg').RosPack().get_path('rason_sim') + '/config/two_robots.yaml'
+    # fualt:= is misspelt: roslaunch ignores it, and the default fault shows
+    assert configuration_lines('faulty_helper.launch', 'fualt:=left_actuator', 'rate:=2') == [
+        '[configuration] sim.launch: world %s (robots helper, faulty), rate 2, seed 1, lockstep auto' % world,
+        '[configuration] robot.launch: namespace /helper/, program %s/helper.mas2j, wiring %s/perceptions.yaml, '
+        'fault none, camera true, profile sim, fleet ros' % (agents, agents),
+        '[configuration] robot.launch: namespace /faulty/, program %s/faulty.mas2j, wiring none, '
+        'fault both_actuators, camera false, profile sim, fleet ros' % agents]
+    assert configuration_lines('fault_tolerance.launch', 'fault:=odometry')[2] == (
+        '[configuration] robot.launch: namespace /faulty/, program %s/faulty_mission.mas2j, wiring %s/perceptions.yaml, '
+        'fault odometry, camera false, profile sim, fleet ros' % (agents, agents))
+    assert configuration_lines('robot.launch', 'ns:=r1') == [
+        '[configuration] robot.launch: namespace /r1/, program none, wiring none, fault none, camera false, profile sim, fleet ros']
+    assert configuration_lines('demo.launch') == [
+        '[configuration] demo.launch: program %s/agents/demo/demo.mas2j, robot fake_robot' % PACKAGE]
+
+
+def test_a_configuration_line_names_a_world_s_robots_or_that_it_cannot_be_read():
+    assert line(['sim.launch', 'world=/nonexistent.yaml', 'rate=1', '__name:=c', '__log:=/x.log']) == (
+        '[configuration] sim.launch: world /nonexistent.yaml (cannot be read), rate 1')
+    assert line(['robot.launch', 'wiring=']) == '[configuration] robot.launch: wiring (empty)'
+
+
+def remaps(config, node):
+    """The remappings roslaunch gives ``node`` (its full name), resolved in its namespace."""
+    found = [n for n in config.nodes if n.namespace + n.name == node]
+    assert found, node
+    return {rosgraph_names.ns_join(found[0].namespace, a): rosgraph_names.ns_join(found[0].namespace, b)
+            for a, b in found[0].remap_args}
+
+
+def test_the_turtlebot2_profile_wires_kobuki_node_s_and_the_openni_camera_s_names():
+    path = os.path.join(PACKAGE, 'launch', 'robot.launch')
+    config = roslaunch.config.load_config_default(
+        [(path, ['ns:=tb', 'profile:=turtlebot2', 'camera:=true'])], None, verbose=False)
+    injector = remaps(config, '/tb/fault_injector')
+    assert injector['/tb/cmd_vel_out'] == '/tb/mobile_base/commands/velocity'
+    assert injector['/tb/odom_in'] == '/tb/odom'
+    assert remaps(config, '/tb/motion_decomp')['/tb/cmd_vel'] == '/tb/cmd_vel_mux'
+    camera = remaps(config, '/tb/vision_synth')
+    assert {camera['/tb/camera/rgb/image_raw'], camera['/tb/camera/rgb/camera_info'],
+            camera['/tb/camera/depth_registered/image_raw']} == {
+        '/tb/camera/rgb/image_raw', '/tb/camera/rgb/camera_info', '/tb/camera/depth_registered/image_raw'}
+    # without the fault injector, the decomposer drives kobuki_node's topic itself
+    config = roslaunch.config.load_config_default(
+        [(path, ['ns:=tb', 'profile:=turtlebot2', 'fault_injector:=false'])], None, verbose=False)
+    decomposer = remaps(config, '/tb/motion_decomp')
+    assert decomposer['/tb/cmd_vel'] == '/tb/mobile_base/commands/velocity'
+    assert decomposer['/tb/odom'] == '/tb/odom'
+    assert "'profile:=kobuki is not known: sim or turtlebot2'" in refusal('robot.launch', 'ns:=tb', 'profile:=kobuki')

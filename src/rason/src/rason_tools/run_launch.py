@@ -12,8 +12,9 @@ every node gone) exits with status 1.
 Mistakes roslaunch lets through are refused or shown before any node starts: an ``ARG:=VALUE``
 the file does not declare (roslaunch ignores it) stops with status 2 and the file's arguments;
 the first lines show the effective configuration: each namespace (robot) with its nodes, the
-program each ``rason_mas`` runs and the entries each wiring node (``generic_synthesizer``,
-``generic_decomposer``) was given.
+program each ``rason_mas`` runs, the entries each wiring node (``generic_synthesizer``,
+``generic_decomposer``) was given, and the lines of the file's ``launch_config`` nodes (which
+plain roslaunch prints as they start; here they are printed, not started).
 
 Everything else is roslaunch's: the summary, a master started when none is running, the
 nodes' output, SIGINT and SIGTERM."""
@@ -31,6 +32,7 @@ import roslaunch.rlutil
 import rospkg
 
 from rason_tools.launch_args import launch_args
+from rason_tools.launch_config import node_line
 
 USAGE = 'usage: rosrun rason run_launch PACKAGE FILE.launch [ARG:=VALUE ...]  (or FILE.launch [ARG:=VALUE ...])'
 
@@ -142,10 +144,14 @@ class QuietEndParent(roslaunch.parent.ROSLaunchParent):
             if node.required:
                 node.required = False    # no banner: run_end ends the launch instead
                 self.run_end.nodes.add(node_key(node.namespace, node.name))
+        # the launch files' own configuration lines, printed here before any node starts
+        shown = [n for n in self.config.nodes if (n.package, n.type) == ('rason', 'launch_config')]
+        self.config.nodes = [n for n in self.config.nodes if (n.package, n.type) != ('rason', 'launch_config')]
         launch_file = os.path.basename(self.roslaunch_files[0][0])
         print('run_launch: %s, effective configuration (namespace: nodes):' % launch_file)
         print('\n'.join(configuration([(n.namespace, n.name, n.type, n.args) for n in self.config.nodes],
-                                       list(self.config.params))))
+                                       list(self.config.params))
+                         + [node_line(n.args) for n in shown]))
         sys.stdout.flush()
 
     def _start_pm(self):

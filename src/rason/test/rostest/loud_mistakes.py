@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Mistakes that say so, with the nodes running: robot.launch with a wiring file in the wrong
-layout ends at once, under run_launch with the synthesizer's fatal line last on screen and
-under roslaunch through its REQUIRED banner; agents that cannot start end run_launch too, though
+layout ends at once, saying where the synthesizer looked and what to change, under run_launch
+with that fatal line last on screen and under roslaunch through its REQUIRED banner, after the
+launch's configuration line; agents that cannot start end run_launch too, though
 not a required node; a generic_synthesizer configured with a real but
 wrong type (std_msgs/Float32 on a sensor_msgs/BatteryState topic) warns naming both types; and
 rason_mas warns once about the expected source that synthesizer never delivers."""
@@ -19,8 +20,18 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(
 from rason_testing import HERE, LogWatcher, run_launch, start_mas, stop_mas  # noqa: E402
 
 WRAPPED = os.path.join(HERE, 'config', 'wrapped_perceptions.yaml')
-FATAL = ('generic_synthesizer: bad configuration: ~perceptions: a dict from entry names to a topic, its type '
-         'and the literals made of its messages is needed')
+
+
+def fatal(ns):
+    """The synthesizer's fatal line for the wrapped file: where it looked, what it found, what to do."""
+    return ('generic_synthesizer: bad configuration: ~perceptions is not set (looked for /%s/generic_synthesizer/'
+            'perceptions, found /%s/generic_synthesizer/generic_synthesizer/perceptions): the wiring file loaded '
+            'into this node has `generic_synthesizer:` at its top level (its top-level keys: generic_synthesizer), '
+            'the layout for loading into the robot\'s namespace, as patrol.launch loads agents/patrol/wiring.yaml; '
+            'a file given as robot.launch perceptions:=FILE needs `perceptions:` at its top level: remove the '
+            '`generic_synthesizer:` line and unindent what it holds' % (ns, ns))
+
+
 BATTERY = {'battery': {'topic': 'battery', 'type': 'std_msgs/Float32', 'source': 'battery',
                        'literals': {'charge(C)': {'C': 'data'}}}}
 
@@ -43,10 +54,12 @@ class TestLoudMistakes(unittest.TestCase):
         self.assertLess(first, 4, lines[:first])
         self.assertTrue(lines[first + 1].startswith('  /loud1/: ') and 'generic_synthesizer' in lines[first + 1],
                         lines[first + 1])
+        self.assertEqual(lines[first + 2], '[configuration] robot.launch: namespace /loud1/, program none, wiring %s, '
+                                           'fault none, camera false, profile sim, fleet ros' % WRAPPED)
         self.assertNotIn('process[', '\n'.join(lines[:first]))
         self.assertEqual(lines[-2], 'run_launch: loud1/generic_synthesizer failed (exit status 1): '
                                     'the launch is shut down')
-        self.assertTrue(lines[-1].startswith('run_launch: loud1/generic_synthesizer: ' + FATAL), lines[-1])
+        self.assertEqual(lines[-1], 'run_launch: loud1/generic_synthesizer: ' + fatal('loud1'))
 
     def test_agents_that_cannot_start_end_run_launch_though_not_required(self):
         status, output = run_launch('robot.launch', 'ns:=loud4', 'mas:=/nonexistent/nothing.mas2j', timeout=30)
@@ -60,7 +73,12 @@ class TestLoudMistakes(unittest.TestCase):
     def test_a_node_that_cannot_start_ends_roslaunch_too(self):
         launch = subprocess.run(['roslaunch', 'rason', 'robot.launch', 'ns:=loud2', 'perceptions:=' + WRAPPED],
                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=60)
-        self.assertIn(FATAL, launch.stdout)
+        self.assertIn(fatal('loud2'), launch.stdout)
+        # the configuration line, before the node that fails says anything
+        shown = ('[configuration] robot.launch: namespace /loud2/, program none, wiring %s, fault none, '
+                 'camera false, profile sim, fleet ros' % WRAPPED)
+        self.assertIn(shown, launch.stdout)
+        self.assertLess(launch.stdout.index(shown), launch.stdout.index(fatal('loud2')))
         self.assertRegex(launch.stdout, r'REQUIRED process \[loud2/generic_synthesizer-\d+\] has died!')
 
     def test_a_wrong_type_and_the_source_it_never_delivers_are_named(self):

@@ -23,7 +23,7 @@ from actionlib_msgs.msg import GoalStatus
 from rason_decomposer.node import Decomposer
 from rason_msgs.msg import Event, Perception
 
-from rason_wiring import config, fields
+from rason_wiring import config, fields, layout
 from rason_wiring.ros_types import Resolver
 
 _STATUS_NAMES = {getattr(GoalStatus, n): n for n in
@@ -173,7 +173,7 @@ def main():
     rospy.init_node('generic_decomposer')
     node = rospy.get_name().split('/')[-1]
     try:
-        mappings = config.parse(rospy.get_param('~actions', None), Resolver(),
+        mappings = config.parse(layout.wiring_param('actions', rospy), Resolver(),
                                 default_source=lambda functor: '%s_%s' % (node, functor))
         server_wait = float(rospy.get_param('~server_wait', 1.0))
         if not 0 < server_wait < 1e6:

@@ -15,7 +15,7 @@ import rosgraph
 import rospy
 from rason_msgs.msg import Perception
 
-from rason_wiring import synth
+from rason_wiring import layout, synth
 from rason_wiring.config import ConfigError
 from rason_wiring.ros_types import Resolver
 from rason_wiring.type_check import TypeCheck
@@ -90,7 +90,7 @@ def main():
     rospy.init_node('generic_synthesizer')
     node = rospy.get_name().split('/')[-1]
     try:
-        syntheses = synth.parse(rospy.get_param('~perceptions', None), Resolver(),
+        syntheses = synth.parse(layout.wiring_param('perceptions', rospy), Resolver(),
                                 default_source=lambda entry: '%s_%s' % (node, entry))
     except (ConfigError, ValueError, TypeError) as e:
         rospy.logfatal('generic_synthesizer: bad configuration: %s', e)
