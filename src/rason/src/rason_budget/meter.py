@@ -31,7 +31,8 @@ class Observation(object):
         self.rss_last_kb = s.rss_kb
 
     def update(self, s):
-        self.name = s.name  # a launch prefix execs the node: the name is the node's from then on
+        if s.name:  # a launch prefix execs the node: its name from then on; none once it ended
+            self.name = s.name
         self.last_cpu_s = s.cpu_s
         self.rss_max_kb = max(self.rss_max_kb, s.rss_kb)
         self.hwm_kb = max(self.hwm_kb, s.hwm_kb)
@@ -106,11 +107,14 @@ class Meter(object):
                 continue
             pids = group.pids()
             inside.update(pids)
+            for pid in pids:  # seen outside before in_budget joined the group: only inside counts
+                self.procs.pop((OUTSIDE, pid), None)
             self.rss_total[robot].append(sum(self._see(robot, pid) for pid in pids))
         root = self.root_pid()
         if root:
+            in_a_group = {pid for where, pid in self.procs if where != OUTSIDE}
             for pid in procstat.descendants(root):
-                if pid not in inside:
+                if pid not in inside and pid not in in_a_group:
                     self._see(OUTSIDE, pid)
 
     def summary(self):

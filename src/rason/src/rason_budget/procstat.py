@@ -32,7 +32,7 @@ def name_from_cmdline(argv):
     words = [a for a in argv if a]
     while words and (os.path.basename(words[0]).rstrip('0123456789.') in INTERPRETERS or words[0].startswith('-')):
         words = words[1:]
-    return os.path.basename(words[0]) if words else (os.path.basename(argv[0]) if argv else '?')
+    return os.path.basename(words[0]) if words else ''
 
 
 class ProcSample(object):
