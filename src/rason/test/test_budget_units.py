@@ -102,6 +102,9 @@ def test_the_summary_gives_mean_and_p95_cores_and_rss_per_process_and_in_total()
     assert f['cpu_mean_cores'] == pytest.approx(0.31)
     assert f['cpu_p95_cores'] == pytest.approx(1.0)  # nearest rank: the 10th of 10 intervals
     assert f['quota_cores'] == 0.5 and f['seconds'] == 10.0
+    assert f['cores_series'][0] == [1.0, 0.2] and len(f['cores_series']) == 10
+    late = meter.summarize({'faulty': usage}, {}, [], {}, {}, 1.0, start_up_s=9.0)['robots']['faulty']
+    assert late['cpu_p95_after_start_up_cores'] == pytest.approx(0.5)  # only the window ending at 10 s
     assert f['rss_total_peak_mb'] == 190.0 and f['rss_sum_of_peaks_mb'] == 230.0
     assert [(p['name'], p['cpu_s'], p['rss_peak_mb']) for p in f['processes']] == [
         ('rason_mas', 2.0, 200.0), ('motion_decomp', 0.3, 30.0)]  # busiest first; born in the run: from 0

@@ -8,13 +8,15 @@ def _robot(mean, p95, mas_rss, total_rss, quota):
              {'name': 'motion_decomp', 'pid': 2, 'cpu_s': 1.5, 'cpu_mean_cores': 0.05, 'rss_peak_mb': 50.0,
               'rss_last_mb': 50.0}]
     return {'quota_cores': quota, 'seconds': 30.0, 'cpu_s': mean * 30, 'cpu_mean_cores': mean, 'cpu_p95_cores': p95,
-            'cpu_max_cores': p95 + 0.2, 'throttling': {'periods': 300, 'throttled_periods': 80, 'throttled_s': 9.0},
+            'cpu_max_cores': p95 + 0.2, 'start_up_s': 15.0, 'cpu_p95_after_start_up_cores': p95,
+            'cores_series': [[0.5, 0.9], [1.0, p95]], 'throttling': {'periods': 300, 'throttled_periods': 80, 'throttled_s': 9.0},
             'rss_total_peak_mb': total_rss, 'rss_sum_of_peaks_mb': total_rss + 5, 'processes': procs}
 
 
 def _run(fault, quota, outcome='correct', mean=0.3, p95=0.45, mas_rss=150.0):
     return {'fault': fault, 'quota_cores': quota, 'outcome': outcome,
-            'component': fault if outcome == 'correct' else 'none', 'reason': '', 'wall_s': 31.0, 'steps_s': {},
+            'component': fault if outcome == 'correct' else 'none', 'reason': '', 'wall_s': 31.0,
+            'steps_s': {'total': 14.5},
             'interval_s': 0.5,
             'robots': {'faulty': _robot(mean, p95, mas_rss, 280.0, quota), 'helper': _robot(mean, p95, mas_rss, 420.0, quota)},
             'outside': {'cpu_s': 8.0, 'processes': [{'name': 'rason_sim', 'pid': 9, 'cpu_s': 4.5, 'cpu_mean_cores': 0.15,
@@ -49,7 +51,14 @@ def test_the_section_lists_each_run_per_robot_and_each_process():
                'budget': _budget()}
     text = report.markdown(results)
     assert '## What a robot needs: the case study per robot' in text
-    assert '| both_actuators | 0.5 core | correct (both_actuators) | 31 | helper | 0.30 | 0.45 | 0.65 | 9.0 | 80 of 300 (9.0 s) | 420 MB |' in text
+    assert ('| both_actuators | 0.5 core | correct (both_actuators) | 14.5 | 31 | helper | 0.30 | 0.45 | 0.45 | 0.65 | 9.0 '
+            '| 80 of 300 (9.0 s) | 420 MB |') in text
     assert '| faulty | rason_mas | 3.00 | 0.100 | 150 | 3.00 |' in text
     assert '| outside | rason_sim | 4.50 | 0.150 | 100 | 4.50 |' in text
     assert 'robot budget: the case study diagnoses right with each robot held to 0.5 core' in text
+
+
+def test_the_plot_is_written(tmp_path):
+    from rason_bench import plots
+    plots.budget_plot(_budget(), str(tmp_path / 'budget.png'))
+    assert (tmp_path / 'budget.png').stat().st_size > 1000

@@ -10,6 +10,8 @@ import time
 from rason_budget import procstat
 
 OUTSIDE = 'outside'
+#: The first seconds of a run, when the JVM and the nodes start: a burst a robot has once.
+START_UP_S = 15.0
 
 
 def percentile(values, q):
@@ -134,8 +136,9 @@ def _process_rows(observations, seconds):
     return sorted(rows, key=lambda r: -r['cpu_s'])
 
 
-def summarize(usage, rss_total, observations, throttling, quotas, interval):
-    """Per robot: CPU in cores (mean over the run; p95 and max over the sampling intervals),
+def summarize(usage, rss_total, observations, throttling, quotas, interval, start_up_s=START_UP_S):
+    """Per robot: CPU in cores (mean over the run; p95 and max over the sampling intervals,
+    p95 also without the first ``start_up_s`` s, and each interval's as ``cores_series``),
     CPU seconds, how often the quota throttled it, RSS in total (peak of the sum of its
     processes at a look, and the sum of their peaks) and per process; the same per process
     for those outside every group."""
@@ -147,7 +150,9 @@ def summarize(usage, rss_total, observations, throttling, quotas, interval):
         t0, u0 = series[0]
         t1, u1 = series[-1]
         seconds = t1 - t0
-        cores = [(b[1] - a[1]) / 1e9 / (b[0] - a[0]) for a, b in zip(series, series[1:]) if b[0] > a[0]]
+        windows = [(b[0] - t0, (b[1] - a[1]) / 1e9 / (b[0] - a[0])) for a, b in zip(series, series[1:]) if b[0] > a[0]]
+        cores = [c for _, c in windows]
+        settled = [c for t, c in windows if t > start_up_s]
         mine = [o for o in observations if o.where == robot]
         out['robots'][robot] = {
             'quota_cores': quotas.get(robot), 'seconds': round(seconds, 1),
@@ -155,6 +160,9 @@ def summarize(usage, rss_total, observations, throttling, quotas, interval):
             'cpu_mean_cores': round((u1 - u0) / 1e9 / seconds, 3) if seconds else None,
             'cpu_p95_cores': round(percentile(cores, 95), 3) if cores else None,
             'cpu_max_cores': round(max(cores), 3) if cores else None,
+            'start_up_s': start_up_s,
+            'cpu_p95_after_start_up_cores': round(percentile(settled, 95), 3) if settled else None,
+            'cores_series': [[round(t, 2), round(c, 3)] for t, c in windows],
             'throttling': throttling.get(robot),
             'rss_total_peak_mb': _mb(max(rss_total.get(robot) or [0])),
             'rss_sum_of_peaks_mb': _mb(sum(max(o.hwm_kb, o.rss_max_kb) for o in mine)),

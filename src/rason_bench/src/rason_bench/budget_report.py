@@ -29,7 +29,9 @@ def goals(budget):
     free, held = _free_runs(budget), _held_runs(budget)
     out = []
     if free:
-        for key, what in (('cpu_mean_cores', 'mean'), ('cpu_p95_cores', 'p95 over %g s windows' % free[0]['interval_s'])):
+        windows = 'p95 over %g s windows after the first %g s (start-up)' % (
+            free[0]['interval_s'], next(iter(free[0]['robots'].values())).get('start_up_s', 0))
+        for key, what in (('cpu_mean_cores', 'mean'), ('cpu_p95_after_start_up_cores', windows)):
             out.append(('robot budget: each robot\'s CPU in the case study (no quota), %s <= %g core' % (what, CPU_GOAL_CORES),
                         _per_robot(free, lambda r: r[key], '%.2f'),
                         all(r[key] <= CPU_GOAL_CORES for run in free for r in run['robots'].values())))
@@ -56,15 +58,19 @@ def _quota(cores):
 
 
 def runs_table(budget):
-    lines = [_row(['fault', 'quota', 'diagnosis', 'wall s', 'robot', 'CPU mean', 'p95', 'max', 'CPU s',
-                   'throttled periods', 'RSS peak, all its processes']), _row(['---'] * 11)]
+    lines = [_row(['fault', 'quota', 'diagnosis', 'scenario s (simulated)', 'wall s', 'robot', 'CPU mean', 'p95',
+                   'p95 after start-up', 'max', 'CPU s', 'throttled periods', 'RSS peak, all its processes']),
+             _row(['---'] * 13)]
     for run in budget['runs']:
         for robot, r in sorted(run['robots'].items()):
             t = r.get('throttling') or {}
             lines.append(_row([run['fault'], _quota(run['quota_cores']),
                                '%s (%s)' % (run['outcome'], run['component']),
+                               '%.1f' % run['steps_s']['total'] if run['steps_s'].get('total') is not None else '–',
                                '%.0f' % run['wall_s'] if run['wall_s'] is not None else '–', robot,
-                               '%.2f' % r['cpu_mean_cores'], '%.2f' % r['cpu_p95_cores'], '%.2f' % r['cpu_max_cores'],
+                               '%.2f' % r['cpu_mean_cores'], '%.2f' % r['cpu_p95_cores'],
+                               '%.2f' % r['cpu_p95_after_start_up_cores'] if r.get('cpu_p95_after_start_up_cores')
+                               is not None else '–', '%.2f' % r['cpu_max_cores'],
                                '%.1f' % r['cpu_s'],
                                '%d of %d (%.1f s)' % (t.get('throttled_periods', 0), t.get('periods', 0),
                                                       t.get('throttled_s', 0.0)),
@@ -106,7 +112,11 @@ def text(budget):
            '(`rason_bridge.jvm`), not the campaign\'s for short runs.' % (budget['quota_cores'],
                                                                          budget['runs'][0]['interval_s']
                                                                          if budget['runs'] else 0.5), '',
-           runs_table(budget)]
+           runs_table(budget), '"scenario s": the case study\'s own steps, fault detection to diagnosis, in simulated '
+           'seconds (rason_campaign.steps); the wall time adds the start-up. CPU over one run: '
+           '[budget.png](budget.png).', '',
+           'In the case study both robots share one ROS master; a robot on its own computer would also run its own '
+           '`rosmaster` and `rosout` (the "outside" rows: about 1 s of CPU and 60 MB in a run).', '']
     free, held = _free_runs(budget), _held_runs(budget)
     if free:
         first = free[0]

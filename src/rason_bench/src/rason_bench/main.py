@@ -175,6 +175,8 @@ def write(results, out_dir):
         plots.latency_plot(results['latency'], os.path.join(out_dir, 'latency.png'))
     if 'scale' in results:
         plots.scale_plot(results['scale'], os.path.join(out_dir, 'scale.png'))
+    if results.get('budget', {}).get('runs'):
+        plots.budget_plot(results['budget'], os.path.join(out_dir, 'budget.png'))
     if 'reaction' in results:
         plots.reaction_plot(results['reaction'], os.path.join(out_dir, 'reaction.png'))
     with open(os.path.join(out_dir, 'report.md'), 'w') as f:
