@@ -103,8 +103,7 @@ def test_the_summary_gives_mean_and_p95_cores_and_rss_per_process_and_in_total()
     assert f['cpu_p95_cores'] == pytest.approx(1.0)  # nearest rank: the 10th of 10 intervals
     assert f['quota_cores'] == 0.5 and f['seconds'] == 10.0
     assert f['cores_series'][0] == [1.0, 0.2] and len(f['cores_series']) == 10
-    late = meter.summarize({'faulty': usage}, {}, [], {}, {}, 1.0, start_up_s=9.0)['robots']['faulty']
-    assert late['cpu_p95_after_start_up_cores'] == pytest.approx(0.5)  # only the window ending at 10 s
+    assert f['cpu_p95_running_cores'] is None  # no window after the first 15 s
     assert f['rss_total_peak_mb'] == 190.0 and f['rss_sum_of_peaks_mb'] == 230.0
     assert [(p['name'], p['cpu_s'], p['rss_peak_mb']) for p in f['processes']] == [
         ('rason_mas', 2.0, 200.0), ('motion_decomp', 0.3, 30.0)]  # busiest first; born in the run: from 0
@@ -112,6 +111,16 @@ def test_the_summary_gives_mean_and_p95_cores_and_rss_per_process_and_in_total()
     lines = cli.format_summary(s)
     assert lines[0].startswith('faulty (quota 0.50 core): CPU mean 0.310 core, p95 1.000')
     assert any('outside the budget' in line for line in lines)
+    late = meter.summarize({'faulty': usage}, {}, [], {}, {}, 1.0, start_up_s=2.0, running_until=8.5)['robots']['faulty']
+    assert late['cpu_p95_running_cores'] == pytest.approx(0.2)  # the windows ending at 3..8 s
+    assert late['running_s'] == [2.0, 8.5]
+
+
+def test_shut_down_begins_when_a_group_first_loses_a_process():
+    counts = {'faulty': [(0.0, 0), (1.0, 4), (2.0, 4), (3.0, 3), (4.0, 0)],
+              'helper': [(0.0, 0), (1.0, 2), (2.0, 4), (3.5, 4), (4.0, 1)]}
+    assert meter.first_departure(counts) == 3.0
+    assert meter.first_departure({'faulty': [(0.0, 0), (1.0, 4)]}) is None
 
 
 def test_percentile_is_nearest_rank():

@@ -8,7 +8,7 @@ def _robot(mean, p95, mas_rss, total_rss, quota):
              {'name': 'motion_decomp', 'pid': 2, 'cpu_s': 1.5, 'cpu_mean_cores': 0.05, 'rss_peak_mb': 50.0,
               'rss_last_mb': 50.0}]
     return {'quota_cores': quota, 'seconds': 30.0, 'cpu_s': mean * 30, 'cpu_mean_cores': mean, 'cpu_p95_cores': p95,
-            'cpu_max_cores': p95 + 0.2, 'start_up_s': 15.0, 'cpu_p95_after_start_up_cores': p95,
+            'cpu_max_cores': p95 + 0.2, 'start_up_s': 15.0, 'cpu_p95_running_cores': p95,
             'cores_series': [[0.5, 0.9], [1.0, p95]], 'throttling': {'periods': 300, 'throttled_periods': 80, 'throttled_s': 9.0},
             'rss_total_peak_mb': total_rss, 'rss_sum_of_peaks_mb': total_rss + 5, 'processes': procs}
 

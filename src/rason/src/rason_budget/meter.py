@@ -58,6 +58,7 @@ class Meter(object):
         self.root_pid = root_pid or (lambda: None)
         self.usage = {robot: [] for robot in budget.groups}   # [(t, ns)]
         self.rss_total = {robot: [] for robot in budget.groups}  # [kB] at each look
+        self.counts = {robot: [] for robot in budget.groups}  # [(t, processes in the group)]
         self.procs = {}  # (where, pid) -> Observation
         self.throttling = {}
         self._stop = threading.Event()
@@ -112,6 +113,7 @@ class Meter(object):
             for pid in pids:  # seen outside before in_budget joined the group: only inside counts
                 self.procs.pop((OUTSIDE, pid), None)
             self.rss_total[robot].append(sum(self._see(robot, pid) for pid in pids))
+            self.counts[robot].append((now, len(pids)))
         root = self.root_pid()
         if root:
             in_a_group = {pid for where, pid in self.procs if where != OUTSIDE}
@@ -121,7 +123,8 @@ class Meter(object):
 
     def summary(self):
         return summarize(self.usage, self.rss_total, self.procs.values(), self.throttling,
-                         {r: self.budget.robots[r] for r in self.usage}, self.interval)
+                         {r: self.budget.robots[r] for r in self.usage}, self.interval,
+                         running_until=first_departure(self.counts))
 
 
 def _mb(kb):
@@ -136,9 +139,25 @@ def _process_rows(observations, seconds):
     return sorted(rows, key=lambda r: -r['cpu_s'])
 
 
-def summarize(usage, rss_total, observations, throttling, quotas, interval, start_up_s=START_UP_S):
-    """Per robot: CPU in cores (mean over the run; p95 and max over the sampling intervals,
-    p95 also without the first ``start_up_s`` s, and each interval's as ``cores_series``),
+def first_departure(counts):
+    """The first time (monotonic) a group had fewer processes than it once had: the run's
+    shut-down begins (in the case study Faulty's agents stop), or None."""
+    ends = []
+    for series in counts.values():
+        most = 0
+        for t, n in series:
+            if n < most:
+                ends.append(t)
+                break
+            most = max(most, n)
+    return min(ends) if ends else None
+
+
+def summarize(usage, rss_total, observations, throttling, quotas, interval, start_up_s=START_UP_S,
+              running_until=None):
+    """Per robot: CPU in cores (mean over the run; p95 and max over the sampling intervals;
+    p95 while running: after the first ``start_up_s`` s and up to ``running_until`` (monotonic
+    time, when shut-down began); and each interval's as ``cores_series``),
     CPU seconds, how often the quota throttled it, RSS in total (peak of the sum of its
     processes at a look, and the sum of their peaks) and per process; the same per process
     for those outside every group."""
@@ -152,7 +171,8 @@ def summarize(usage, rss_total, observations, throttling, quotas, interval, star
         seconds = t1 - t0
         windows = [(b[0] - t0, (b[1] - a[1]) / 1e9 / (b[0] - a[0])) for a, b in zip(series, series[1:]) if b[0] > a[0]]
         cores = [c for _, c in windows]
-        settled = [c for t, c in windows if t > start_up_s]
+        end = (running_until - t0) if running_until is not None else seconds
+        running = [c for t, c in windows if start_up_s < t <= end]
         mine = [o for o in observations if o.where == robot]
         out['robots'][robot] = {
             'quota_cores': quotas.get(robot), 'seconds': round(seconds, 1),
@@ -161,7 +181,8 @@ def summarize(usage, rss_total, observations, throttling, quotas, interval, star
             'cpu_p95_cores': round(percentile(cores, 95), 3) if cores else None,
             'cpu_max_cores': round(max(cores), 3) if cores else None,
             'start_up_s': start_up_s,
-            'cpu_p95_after_start_up_cores': round(percentile(settled, 95), 3) if settled else None,
+            'running_s': [start_up_s, round(end, 2)],
+            'cpu_p95_running_cores': round(percentile(running, 95), 3) if running else None,
             'cores_series': [[round(t, 2), round(c, 3)] for t, c in windows],
             'throttling': throttling.get(robot),
             'rss_total_peak_mb': _mb(max(rss_total.get(robot) or [0])),
