@@ -16,7 +16,7 @@ ROBOTS = ('faulty', 'helper')
 SEED = 7
 
 
-def run(fault, cores, out_dir, seed=SEED, interval=0.5, timeout=240, base_port=11851):
+def run(fault, cores, out_dir, seed=SEED, interval=0.5, timeout=240, base_port=11911):
     """(the campaign's result dict, the meter's summary) of one run with each robot held to
     ``cores`` (None: no quota, measured only); the bag, log and ``budget.json`` in out_dir."""
     (spec,) = plan.make_plan([fault], 1, seed, rate=1.0, jitter=False)
