@@ -75,6 +75,8 @@ def test_status_values_in_kb():
     (['/ws/devel/lib/vision_synth/vision_synth_node', '__name:=vision_synth'], 'vision_synth'),
     (['/usr/bin/python3', '-u', '/usr/bin/roslaunch', '--port', '11611'], 'roslaunch'),
     (['/bin/sleep', '5'], 'sleep'),
+    (['/usr/bin/python3', '-c', 'while True: pass'], 'python3'),
+    (['/usr/bin/python3', '-m', 'rason_hosts.relay', '--port', '1'], 'rason_hosts.relay'),
 ])
 def test_a_process_is_named_by_its_node_or_its_program(argv, name):
     assert procstat.name_from_cmdline(argv) == name

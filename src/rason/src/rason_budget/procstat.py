@@ -30,9 +30,13 @@ def name_from_cmdline(argv):
         if arg.startswith('__name:='):
             return arg.split(':=', 1)[1]
     words = [a for a in argv if a]
+    program = ''
     while words and (os.path.basename(words[0]).rstrip('0123456789.') in INTERPRETERS or words[0].startswith('-')):
+        if words[0] in ('-c', '-m'):  # python3 -c CODE: the interpreter's name; -m MODULE: the module's
+            return words[1] if words[0] == '-m' and len(words) > 1 else program
+        program = program or os.path.basename(words[0])
         words = words[1:]
-    return os.path.basename(words[0]) if words else ''
+    return os.path.basename(words[0]) if words else program
 
 
 class ProcSample(object):
