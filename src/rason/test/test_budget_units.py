@@ -128,3 +128,14 @@ def test_shut_down_begins_when_a_group_first_loses_a_process():
 def test_percentile_is_nearest_rank():
     assert meter.percentile([5, 1, 4, 2, 3], 95) == 5
     assert meter.percentile([5, 1, 4, 2, 3], 50) == 3
+
+
+def test_v2_that_cannot_enable_the_cpu_controller_says_why(tmp_path, monkeypatch):
+    (tmp_path / 'cgroup.subtree_control').write_text('memory\n')
+
+    def busy(path, value):
+        raise OSError(16, 'Device or resource busy')
+    monkeypatch.setattr(cgroups, '_write', busy)
+    group = cgroups.CpuGroup(cgroups.Hierarchy(2, str(tmp_path)), 'rason-abc123-faulty')
+    with pytest.raises(cgroups.BudgetError, match='cannot enable the cpu controller.*Device or resource busy'):
+        group.create(0.5)

@@ -125,7 +125,12 @@ class CpuGroup(object):
         if self.hierarchy.version == 2:
             control = os.path.join(self.hierarchy.cpu_root, 'cgroup.subtree_control')
             if 'cpu' not in _read(control).split():
-                _write(control, '+cpu')
+                try:
+                    _write(control, '+cpu')
+                except OSError as e:  # EBUSY: a non-root group with processes of its own (a container's)
+                    raise BudgetError('cannot enable the cpu controller in %s (%s): in a container, move its '
+                                      'processes into a child group first, or give it a delegated cgroup'
+                                      % (control, e.strerror))
         for d in self.dirs:
             os.mkdir(d)
         self.set_quota(cores, period_us)
