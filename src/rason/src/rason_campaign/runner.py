@@ -244,7 +244,7 @@ def launch_env(master_uri, base=None):
     return env
 
 
-def run(spec, bag_dir, timeout, base_port=11611):
+def run(spec, bag_dir, timeout, base_port=11611, env=None, on_start=None):
     """Run ``spec`` to its end or ``timeout`` wall seconds, on a master of its own (first
     free port from ``base_port``); the bag and the launch's log go to
     ``bag_dir/<spec.name>.bag|.log``, the record to ``.run.json``.
@@ -268,22 +268,24 @@ def run(spec, bag_dir, timeout, base_port=11611):
     cmd = ['roslaunch', '--port', str(port)] + list(spec.launch) + launch_arguments(spec, bag)
     with open(log, 'w') as out:
         out.write(' '.join(cmd) + '\n')
-    timed_out, returncode, wall = _launch(cmd, 'http://127.0.0.1:%d' % port, log, timeout)
+    timed_out, returncode, wall = _launch(cmd, 'http://127.0.0.1:%d' % port, log, timeout, env, on_start)
     record = RunRecord(None if timed_out else returncode, wall, timed_out, bag, log)
     _recover_bag(bag)
     record.save(os.path.join(bag_dir, spec.name + '.run.json'))
     return record
 
 
-def _launch(cmd, master_uri, log, timeout):
+def _launch(cmd, master_uri, log, timeout, env=None, on_start=None):
     """roslaunch ``cmd`` on ``master_uri`` until it ends or ``timeout`` wall seconds, output
     appended to ``log``; (timed out, exit code, wall seconds)."""
     timed_out = False
     t0 = time.monotonic()
     with open(log, 'a') as out:
         proc = subprocess.Popen(cmd, stdout=out, stderr=subprocess.STDOUT,
-                                env=launch_env(master_uri), stdin=subprocess.DEVNULL,
+                                env=dict(launch_env(master_uri), **(env or {})), stdin=subprocess.DEVNULL,
                                 start_new_session=True)
+        if on_start:
+            on_start(proc)
         with _live_lock:
             _live.add(proc)
         try:

@@ -3,7 +3,7 @@ their own and writes ``report.md``, ``results.json`` and PNG plots.
 
 Options: ``--seconds`` (length of one measured run, default 1), ``--quick`` (a subset of
 cells, fewer samples, for a smoke run), ``--only`` (cycle, latency, cpu, reaction, scale,
-preemption, hostile, fleet, behaviour; repeatable), ``--take-backs`` (rounds of the preemption part), ``--out``
+preemption, hostile, fleet, behaviour, budget; repeatable), ``--take-backs`` (rounds of the preemption part), ``--out``
 (directory).
 """
 import argparse
@@ -17,8 +17,8 @@ import time
 
 from rason_bench import plots, report, thesis
 
-#: The parts of a run, in the order they run (behaviour last: it starts the simulator).
-PARTS = ('cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'hostile', 'fleet', 'behaviour')
+#: The parts of a run, in the order they run (behaviour and budget last: they start the simulator).
+PARTS = ('cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'hostile', 'fleet', 'behaviour', 'budget')
 TAKE_BACKS, TAKE_BACKS_QUICK = 200, 50
 #: motion_decomp's ~rate in the preemption part: the 50 Hz control period of the goal.
 CONTROL_RATE_HZ = 50.0
@@ -98,7 +98,7 @@ def main(argv=None):
     failed = []
     try:
         import rospy
-        from rason_bench import behaviour, experiments, fleet, hostile
+        from rason_bench import behaviour, experiments, fleet, hostile, robot_budget
         from rason_bench.harness import Harness
         rospy.init_node('rason_bench', disable_signals=True)
         harness = Harness()
@@ -131,7 +131,9 @@ def main(argv=None):
                 ('behaviour.rate_limit', 'behaviour: perception rate limit', lambda: behaviour.rate_limit(
                     procs, harness, p['rate_limit_seconds'], p['rate_limit_sent_hz'], log)),
                 ('behaviour.sim', 'behaviour: simulator rates (two_robots.launch)', lambda: behaviour.sim_rates(
-                    procs, sim_window, log))]}
+                    procs, sim_window, log))],
+            'budget': [('budget', 'robot budget: the case study, each robot in a CPU cgroup (rate 1)',
+                        lambda: robot_budget.measure(args.quick, log))]}
         for part in parts:
             for key, title, measure in steps[part]:
                 if title:
@@ -173,6 +175,8 @@ def write(results, out_dir):
         plots.latency_plot(results['latency'], os.path.join(out_dir, 'latency.png'))
     if 'scale' in results:
         plots.scale_plot(results['scale'], os.path.join(out_dir, 'scale.png'))
+    if results.get('budget', {}).get('runs'):
+        plots.budget_plot(results['budget'], os.path.join(out_dir, 'budget.png'))
     if 'reaction' in results:
         plots.reaction_plot(results['reaction'], os.path.join(out_dir, 'reaction.png'))
     with open(os.path.join(out_dir, 'report.md'), 'w') as f:

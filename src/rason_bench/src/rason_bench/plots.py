@@ -97,3 +97,25 @@ def reaction_plot(reaction, path):
     fig.tight_layout()
     fig.savefig(path, dpi=_DPI)
     plt.close(fig)
+
+
+def budget_plot(budget, path):
+    """Each robot's CPU (cores, per sampling window) over one run of the first fault, without a
+    quota and on it."""
+    runs = [r for r in budget['runs'] if r['fault'] == budget['runs'][0]['fault']]
+    fig, ax = plt.subplots(figsize=(8, 3.4))
+    for i, robot in enumerate(sorted(runs[0]['robots'])):
+        for run in runs:
+            series = run['robots'][robot].get('cores_series') or []
+            ax.plot([t for t, _ in series], [c for _, c in series], '-' if run['quota_cores'] is None else '--',
+                    color='C%d' % i, label='%s, %s' % (robot, 'no quota' if run['quota_cores'] is None
+                                                        else '%g core' % run['quota_cores']))
+    ax.axhline(budget['quota_cores'], color='grey', lw=0.8, ls=':')
+    ax.set_title('%s: CPU per robot' % runs[0]['fault'])
+    ax.set_xlabel('s after the launch started')
+    ax.set_ylabel('cores')
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=_DPI)
+    plt.close(fig)

@@ -1,5 +1,5 @@
 """Turning measurements into verdicts and Markdown (pure: dicts in, text out)."""
-from rason_bench import fleet_report, stats, thesis
+from rason_bench import budget_report, fleet_report, stats, thesis
 
 #: The issue's goals.
 CYCLE_RATIO_GOAL = 1.2
@@ -86,6 +86,7 @@ def goals(results):
     out += _sim_goals(behaviour.get('sim'))
     out += _hostile_goals(results.get('hostile', {}))
     out += fleet_report.goals(results.get('fleet', {}))
+    out += budget_report.goals(results.get('budget', {}))
     stop = results.get('preemption', {}).get('stop_ms')
     if stop:
         goal = ('preemption: take-back -> zero twist p99 <= %g ms (one 50 Hz control period plus transport)'
@@ -474,6 +475,8 @@ def markdown(results):
         out += ['## Fleet channel (MQTT)', '', fleet_report.text(results['fleet'])]
     if 'behaviour' in results:
         out += ['## Behaviour', '', behaviour_text(results['behaviour'])]
+    if 'budget' in results:
+        out += ['## What a robot needs: the case study per robot', '', budget_report.text(results['budget'])]
     if results.get('durations_s'):
         out += ['Duration: %s s in all; %s.' % (
             '%.0f' % results['duration_s'] if 'duration_s' in results else '?',
