@@ -74,7 +74,7 @@ function agentView(robot, a) {
     ints.append(li);
   }
   for (const i of c.intentions_ended || [])
-    ints.append(el('li', { class: 'removed', 'data-removed': 'intention' }, '#' + i.id + ' ended: ' + (i.plans[i.plans.length - 1] || '')));
+    ints.append(el('li', { class: 'removed', 'data-removed': 'intention' }, '#' + i.id + ' ended' + (i.plans.length ? ': ' + i.plans[i.plans.length - 1] : '')));
   div.append(el('h4', {}, 'Intentions', count(a.intentions.length)), ints);
   div.append(...list('Pending actions',
     a.actions.map(x => x.action + ' (id ' + x.id + ', ' + x.age.toFixed(1) + ' s' + (x.held ? ', held' : '') + ')'),
