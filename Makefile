@@ -22,7 +22,7 @@ APT_PACKAGES := catkin ros-message-generation ros-message-runtime libstd-msgs-de
   python3-move-base-msgs ros-move-base-msgs \
   python3-selenium chromium chromium-driver python3-visualization-msgs ros-visualization-msgs python3-yaml \
   mosquitto mosquitto-clients python3-paho-mqtt nftables iproute2 \
-  mkdocs mkdocs-material python3-pymdownx
+  mkdocs mkdocs-material python3-pymdownx python3-pil
 
 # Environment of every ROS command: the workspace's devel space, logs in build/.
 export PYENV_VERSION := system

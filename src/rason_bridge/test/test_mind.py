@@ -54,7 +54,8 @@ class Record(object):
 
 def test_message_holds_every_field_of_every_agent():
     helper = Record(name='helper', cycle=42, stampNanos=12_500_000_000,
-                    beliefs=['robot(faulty,1.5,2,3)[source(percept)]'], goals=['helpme'],
+                    beliefs=['robot(faulty,1.5,2,3)[source(percept)]'], rules=['near(R) :- robot(R,D,_,_) & D < 2'],
+                    goals=['!helpme[source(faulty)]'],
                     intentions=[Record(id=7, state='waiting', plans=['p1: +!findRobot(faulty) <- turn(10)',
                                                                       'p2: +!helpme[source(faulty)] <- !findRobot'])],
                     actions=[Record(id=3, action='turn(10)', startedNanos=12_000_000_000, held=False)],
@@ -63,7 +64,8 @@ def test_message_holds_every_field_of_every_agent():
     assert msg.mas_id == '/helper/rason_mas' and msg.stamp.to_nsec() == 13_000_000_001
     (a,) = msg.agents
     assert (a.name, a.cycle, a.stamp.to_nsec(), a.omitted) == ('helper', 42, 12_500_000_000, 4)
-    assert a.beliefs == ['robot(faulty,1.5,2,3)[source(percept)]'] and a.goals == ['helpme']
+    assert a.beliefs == ['robot(faulty,1.5,2,3)[source(percept)]'] and a.goals == ['!helpme[source(faulty)]']
+    assert a.rules == ['near(R) :- robot(R,D,_,_) & D < 2']
     assert (a.intentions[0].id, a.intentions[0].state) == (7, 'waiting')
     assert a.intentions[0].plans[0].startswith('p1: +!findRobot')
     assert (a.actions[0].id, a.actions[0].action, a.actions[0].started.to_nsec(), a.actions[0].held) == \

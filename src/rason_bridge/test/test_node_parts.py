@@ -250,6 +250,14 @@ class MindPort(object):
     def inspectorUrl(self):
         return 'http://localhost:3272'
 
+    def requestReads(self):
+        self.pending = 2
+        self.minds.append([])  # what the agents read then
+
+    def readsPending(self):
+        self.pending = max(0, getattr(self, 'pending', 0) - 1)  # one more agent read each time asked
+        return self.pending
+
 
 class Publisher(object):
     def __init__(self):
@@ -279,6 +287,23 @@ def test_mind_publisher_reads_only_while_subscribed_and_publishes_changes():
     pub.subscribers = 0
     mind.step()
     assert bridge.periods == [500000000, 0]
+
+
+def test_mind_publisher_finish_publishes_the_state_the_agents_end_in():
+    bridge, pub = MindPort(), Publisher()
+    mind = MindPublisher(bridge, pub, '/r1/rason_mas', 0.5, lambda: 7, RuntimeError, Log())
+    pub.subscribers = 1
+    bridge.minds = [[]]
+    mind.step()
+    mind.finish(timeout=5.0, poll=0)
+    assert bridge.pending == 0 and len(pub.sent) == 2
+
+
+def test_mind_publisher_finish_without_subscribers_reads_nothing():
+    bridge, pub = MindPort(), Publisher()
+    mind = MindPublisher(bridge, pub, '/r1/rason_mas', 0.5, lambda: 7, RuntimeError, Log())
+    mind.finish(timeout=5.0, poll=0)
+    assert not hasattr(bridge, 'pending') and pub.sent == []
 
 
 # ---- log pump ----------------------------------------------------------------------------

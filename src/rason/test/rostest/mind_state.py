@@ -109,7 +109,7 @@ class TestMindState(unittest.TestCase):
         self.assertEqual((waiting.actions[0].id, waiting.actions[0].action),
                          (action.action_id, 'deliver(p1)'))
         self.assertGreater(waiting.actions[0].started.to_sec(), 0)
-        self.assertEqual(waiting.goals, ['deliver(p1)[source(self)]', 'carry(p1)[source(self)]'])
+        self.assertEqual(waiting.goals, ['!deliver(p1)[source(self)]', '!carry(p1)[source(self)]'])
         (intention,) = waiting.intentions
         self.assertEqual(intention.state, 'waiting')
         self.assertTrue(intention.plans[0].endswith('<- deliver(p1)'), intention.plans)

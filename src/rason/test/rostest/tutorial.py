@@ -123,9 +123,9 @@ class TestTutorial(unittest.TestCase):
         self.assertTrue(drivers, 'no driver agent in the replayed views')
         cruising = [d for d in drivers if any(p['action'].startswith('move(3') for p in d['actions'])]
         self.assertTrue(cruising, 'the pending move(3) never shows')
-        self.assertTrue(all(any(g.startswith('cruise') for g in d['goals']) for d in cruising), [d['goals'] for d in cruising])
+        self.assertTrue(all(any(g.startswith('!cruise') for g in d['goals']) for d in cruising), [d['goals'] for d in cruising])
         self.assertEqual(drivers[-1]['actions'], [])
-        self.assertFalse(any(g.startswith('cruise') for g in drivers[-1]['goals']), drivers[-1]['goals'])
+        self.assertFalse(any(g.startswith('!cruise') for g in drivers[-1]['goals']), drivers[-1]['goals'])
         self.assertTrue(any(b.startswith('past_the_line') for b in drivers[-1]['beliefs']), drivers[-1]['beliefs'])
 
 

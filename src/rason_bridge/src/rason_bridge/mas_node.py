@@ -168,11 +168,11 @@ class RasonMasNode(object):
         self._presence.leave()  # first, so the other processes stop counting on our agents at once
         if not self._fleet:
             self._bridge.leaveFleet(1000)
-        if self._mind is not None:
-            self._mind.stop()
         self._perceptions.stop()
         self._bridge.shutdown('shutdown')
         time.sleep(self.settings.shutdown_grace)
+        if self._mind is not None:  # the state the agents end in, .stopMAS's included
+            self._mind.finish()
         if self._mas is not None and not self._mas.stopAgents(int(join_timeout * 1000)):
             rospy.logwarn('some agents did not stop within %.1f s', join_timeout)
         self._outbound.stop(join_timeout)  # what the agents queued before they stopped still goes out

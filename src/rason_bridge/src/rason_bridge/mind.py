@@ -41,7 +41,7 @@ def to_msg(mas_id, stamp_nanos, minds, inspector_url=''):
     for m in minds:
         msg.agents.append(AgentMind(
             name=str(m.name()), cycle=int(m.cycle()), stamp=_time(m.stampNanos()),
-            beliefs=_texts(m.beliefs()), goals=_texts(m.goals()),
+            beliefs=_texts(m.beliefs()), rules=_texts(m.rules()), goals=_texts(m.goals()),
             intentions=[IntentionState(id=int(i.id()), state=str(i.state()), plans=_texts(i.plans()))
                         for i in m.intentions()],
             actions=[PendingAction(id=int(a.id()), action=str(a.action()), started=_time(a.startedNanos()),

@@ -19,7 +19,8 @@ def mind_record(msg):
         'inspector_url': getattr(msg, 'inspector_url', ''),  # bags recorded before it existed lack it
         'agents': [{
             'name': a.name, 'cycle': a.cycle, 'stamp': _secs(a.stamp),
-            'beliefs': list(a.beliefs), 'goals': list(a.goals),
+            'beliefs': list(a.beliefs), 'rules': list(getattr(a, 'rules', [])),  # older bags lack rules
+            'goals': list(a.goals),
             'intentions': [{'id': i.id, 'state': i.state, 'plans': list(i.plans)} for i in a.intentions],
             'actions': [{'id': p.id, 'action': p.action, 'started': _secs(p.started), 'held': p.held}
                         for p in a.actions],

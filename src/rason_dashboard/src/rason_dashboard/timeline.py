@@ -1,8 +1,11 @@
 """What the dashboard shows, as time goes: each robot's agents (jason/mind), the messages
 between robots and the rason/* statuses of /diagnostics, and the view at any time. No rospy:
-the live node and the bag replay fill it the same way, with ROS time in seconds."""
+the live node and the bag replay fill it the same way, with ROS time in seconds. Each robot in
+a view carries what changed since its snapshot before (:mod:`rason_dashboard.changes`)."""
 import bisect
 import threading
+
+from rason_dashboard.changes import robot_changes
 
 #: How many entries of each kind a live timeline keeps (the oldest go first).
 MAX_MINDS_PER_ROBOT = 5000
@@ -32,6 +35,11 @@ class _Series(object):
         """The newest item at or before t (None: the newest of all), or None."""
         i = len(self._times) if t is None else bisect.bisect_right(self._times, t)
         return self._items[i - 1] if i else None
+
+    def at_and_before(self, t):
+        """The newest item at or before t (None: the newest of all) and the one before it (or None)."""
+        i = len(self._times) if t is None else bisect.bisect_right(self._times, t)
+        return (self._items[i - 1] if i else None), (self._items[i - 2] if i > 1 else None)
 
     def upto(self, t, n):
         """The last n (time, item) pairs at or before t (None: the newest)."""
@@ -77,9 +85,9 @@ class Timeline(object):
         with self._lock:
             robots = []
             for mas_id in sorted(self._minds):
-                mind = self._minds[mas_id].at(t)
+                mind, before = self._minds[mas_id].at_and_before(t)
                 if mind is not None:
-                    robots.append(_with_ages(mind, t))
+                    robots.append(_with_ages(robot_changes(before, mind), t))
             messages = [dict(m, time=mt) for mt, m in self._messages.upto(t, VIEW_MESSAGES)]
             statuses = []
             for name in sorted(self._statuses):

@@ -7,6 +7,7 @@ const POLL_MS = 500;
 let span = null;          // [first, last] time of the data (replay)
 let live = true;
 let request = 0;          // newer requests win over late answers
+const openRules = new Set();  // "robot agent" whose rules the user opened: kept open across redraws
 
 function el(tag, attrs, ...children) {
   const e = document.createElement(tag);
@@ -15,28 +16,66 @@ function el(tag, attrs, ...children) {
   return e;
 }
 
-function list(title, items, cls) {
+function list(title, items, cls, added, removed) {
+  // added: entries new since the robot's snapshot before (marked); removed: gone since (struck out)
+  const fresh = new Set(added || []);
   const ul = el('ul', {});
-  if (!items.length) ul.append(el('li', { class: 'empty' }, 'none'));
-  for (const i of items) ul.append(el('li', { class: cls }, i));
-  return [el('h4', {}, title), ul];
+  if (!items.length && !(removed || []).length) ul.append(el('li', { class: 'empty' }, 'none'));
+  for (const i of items) ul.append(el('li', { class: fresh.has(i) ? cls + ' added' : cls }, i));
+  for (const i of removed || []) ul.append(el('li', { class: 'removed', 'data-removed': cls, title: 'gone since the step before' }, i));
+  return [el('h4', {}, title, count(items.length)), ul];
 }
 
-function agentView(a) {
+function count(n) {
+  return el('span', { class: 'count' }, String(n));
+}
+
+function changeSummary(c) {
+  if (!c || c.new_agent) return null;
+  const parts = [];
+  const n = (xs, what) => { if (xs.length) parts.push(xs.length + ' ' + what); };
+  n(c.beliefs_added, 'belief(s) added'); n(c.beliefs_removed, 'removed');
+  n(c.goals_added, 'goal(s) new'); n(c.goals_removed, 'goal(s) gone');
+  n(c.intentions_changed, 'intention(s) changed'); n(c.intentions_ended, 'ended');
+  n(c.rules_added.concat(c.rules_removed), 'rule change(s)');
+  return el('p', { class: 'changes' }, parts.length ? 'since the step before: ' + parts.join(', ') : 'no change since the step before');
+}
+
+function rulesView(key, rules, added) {
+  const fresh = new Set(added || []);
+  const ul = el('ul', {});
+  for (const r of rules) ul.append(el('li', { class: fresh.has(r) ? 'rule added' : 'rule' }, r));
+  const details = el('details', { class: 'rules' }, el('summary', {}, 'Rules ', count(rules.length)), ul);
+  details.open = openRules.has(key);
+  details.addEventListener('toggle', () => details.open ? openRules.add(key) : openRules.delete(key));
+  return details;
+}
+
+function agentView(robot, a) {
+  const c = a.changes || {};
   const div = el('div', { class: 'agent', 'data-agent': a.name });
   div.append(el('h3', {}, a.name + ' ', el('small', {}, 'cycle ' + a.cycle)));
-  div.append(...list('Beliefs', a.beliefs, 'belief'));
-  div.append(...list('Goals', a.goals, 'goal'));
-  const ints = el('ul', {});
-  if (!a.intentions.length) ints.append(el('li', { class: 'empty' }, 'none'));
+  const summary = changeSummary(a.changes);
+  if (summary) div.append(summary);
+  div.append(...list('Goals', a.goals, 'goal', c.goals_added, c.goals_removed));
+  div.append(...list('Beliefs', a.beliefs, 'belief', c.beliefs_added, c.beliefs_removed));
+  const rules = a.rules || [];
+  if (rules.length)  // collapsed: a program's rules rarely change, and would bury the beliefs
+    div.append(rulesView(robot + ' ' + a.name, rules, c.rules_added));
+  const changed = new Set(c.intentions_changed || []);
+  const ints = el('ul', { class: 'intentions' });
+  if (!a.intentions.length && !(c.intentions_ended || []).length) ints.append(el('li', { class: 'empty' }, 'none'));
   for (const i of a.intentions) {
-    const li = el('li', { class: 'intention' }, el('span', { class: 'state' }, '#' + i.id + ' ' + i.state));
+    const li = el('li', { class: changed.has(i.id) ? 'intention changed' : 'intention', 'data-intention': i.id },
+      el('span', { class: 'state ' + i.state }, '#' + i.id + ' ' + i.state));
     const plans = el('ul', {});
     for (const p of i.plans) plans.append(el('li', { class: 'plan' }, p));
     li.append(plans);
     ints.append(li);
   }
-  div.append(el('h4', {}, 'Intentions'), ints);
+  for (const i of c.intentions_ended || [])
+    ints.append(el('li', { class: 'removed', 'data-removed': 'intention' }, '#' + i.id + ' ended' + (i.plans.length ? ': ' + i.plans[i.plans.length - 1] : '')));
+  div.append(el('h4', {}, 'Intentions', count(a.intentions.length)), ints);
   div.append(...list('Pending actions',
     a.actions.map(x => x.action + ' (id ' + x.id + ', ' + x.age.toFixed(1) + ' s' + (x.held ? ', held' : '') + ')'),
     'action'));
@@ -55,7 +94,7 @@ function draw(view) {
     if (r.inspector_url && r.inspector_url.startsWith('http://127.0.0.1:'))  // Jason's, on this machine
       card.append(el('a', { class: 'inspector', href: r.inspector_url, target: '_blank' }, "Jason's mind inspector"));
     if (!r.agents.length) card.append(el('p', { class: 'empty' }, 'no agents'));
-    for (const a of r.agents) card.append(agentView(a));
+    for (const a of r.agents) card.append(agentView(r.mas_id, a));
     return card;
   }));
   document.getElementById('messages').replaceChildren(...view.messages.map(m =>

@@ -9,11 +9,13 @@ import java.util.List;
  *
  * @param cycle reasoning cycles the agent has run
  * @param stampNanos ROS time the snapshot was taken
- * @param beliefs beliefs in Jason syntax, annotations included
- * @param goals the achievement goals its intentions pursue
+ * @param beliefs beliefs in Jason syntax, annotations included (rules apart)
+ * @param rules the rules of its belief base ({@code head :- body})
+ * @param goals the achievement goals its intentions pursue, each as {@code !goal}
  * @param omitted items left out of the lists to keep the snapshot bounded
  */
-public record AgentMind(String name, long cycle, long stampNanos, List<String> beliefs, List<String> goals,
+public record AgentMind(String name, long cycle, long stampNanos, List<String> beliefs, List<String> rules,
+        List<String> goals,
         List<IntentionView> intentions, List<ActionView> actions, List<String> events, List<String> messages,
         int omitted) {
 
@@ -31,7 +33,8 @@ public record AgentMind(String name, long cycle, long stampNanos, List<String> b
 
     /** Whether the two differ in anything but the cycle count and the time they were taken. */
     public boolean sameStateAs(AgentMind other) {
-        return other != null && name.equals(other.name) && beliefs.equals(other.beliefs) && goals.equals(other.goals)
+        return other != null && name.equals(other.name) && beliefs.equals(other.beliefs)
+                && rules.equals(other.rules) && goals.equals(other.goals)
                 && intentions.equals(other.intentions) && actions.equals(other.actions) && events.equals(other.events)
                 && messages.equals(other.messages) && omitted == other.omitted;
     }

@@ -59,11 +59,29 @@ public final class MindPort {
             synchronized (published) {
                 published.clear();
             }
-            for (Recorded r : agents.values()) {
-                r.recorder().request();
-                r.wake().run();
-            }
+            requestReads();
         }
+    }
+
+    /**
+     * Has every agent read its state at the end of its next cycle, sleeping ones woken for it,
+     * so that the state each ends in is published before the node stops; {@link #readsPending()}
+     * says when they all have.
+     */
+    public void requestReads() {
+        for (Recorded r : agents.values()) {
+            r.recorder().request();
+            r.wake().run();
+        }
+    }
+
+    /** How many agents have not yet read the state asked for by {@link #requestReads()}. */
+    public int readsPending() {
+        int n = 0;
+        for (Recorded r : agents.values())
+            if (r.recorder().isRequested())
+                n++;
+        return n;
     }
 
     public long periodNanos() {

@@ -27,6 +27,9 @@ public final class MindReader {
     /** The annotation Jason's mind inspector hides beliefs by (its kqml rules carry it). */
     static final Atom HIDDEN = ASSyntax.createAtom("hide_in_mind_inspector");
 
+    /** Written before an achievement goal, as in Jason's source ({@code !g}), to tell it from a belief. */
+    static final String GOAL_MARK = "!";
+
     private final int maxItems;
     private final int maxChars;
 
@@ -41,14 +44,16 @@ public final class MindReader {
             List<String> events, List<String> messages) {
         int[] omitted = { 0 };
         List<String> beliefs = new ArrayList<>();
+        List<String> rules = new ArrayList<>();
         for (Literal b : ts.getAg().getBB()) {
             if (b.hasAnnot(HIDDEN))
                 continue; // Jason's own rules (kqml::...), hidden by its mind inspector too
-            if (beliefs.size() == maxItems) {
+            List<String> into = b.isRule() ? rules : beliefs;
+            if (into.size() == maxItems) {
                 omitted[0]++;
                 continue;
             }
-            beliefs.add(cut(b.toString(), maxChars));
+            into.add(cut(b.toString(), maxChars));
         }
         List<String> goals = new ArrayList<>();
         List<AgentMind.IntentionView> intentions = new ArrayList<>();
@@ -72,7 +77,7 @@ public final class MindReader {
                 plans.add(frame(im));
                 Trigger t = im.getTrigger();
                 if (t.isAchvGoal() && t.isAddition())
-                    itsGoals.add(0, cut(t.getLiteral().toString(), maxChars)); // outermost first
+                    itsGoals.add(0, cut(GOAL_MARK + t.getLiteral(), maxChars)); // outermost first
             }
             for (String g : itsGoals) {
                 if (goals.size() == maxItems)
@@ -83,7 +88,8 @@ public final class MindReader {
             intentions.add(new AgentMind.IntentionView(i.getId(), i.getStateBasedOnPlace().toString(),
                     List.copyOf(plans)));
         }
-        return new AgentMind(ts.getAgArch().getAgName(), cycle, stampNanos, List.copyOf(beliefs), List.copyOf(goals),
+        return new AgentMind(ts.getAgArch().getAgName(), cycle, stampNanos, List.copyOf(beliefs), List.copyOf(rules),
+                List.copyOf(goals),
                 List.copyOf(intentions), bounded(actions, omitted), bounded(events, omitted),
                 bounded(messages, omitted), omitted[0]);
     }

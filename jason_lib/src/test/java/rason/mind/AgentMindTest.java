@@ -61,7 +61,7 @@ class AgentMindTest {
         assertEquals("mover", m.name());
         assertTrue(m.beliefs().contains("battery(80)[source(self)]"), m.beliefs().toString());
         assertTrue(m.beliefs().stream().noneMatch(b -> b.contains("hide_in_mind_inspector")), "Jason's kqml rules");
-        assertEquals(List.of("deliver(parcel)[source(self)]", "goTo(dock)[source(self)]"), m.goals());
+        assertEquals(List.of("!deliver(parcel)[source(self)]", "!goTo(dock)[source(self)]"), m.goals());
         assertEquals(1, m.intentions().size(), m.intentions().toString());
         AgentMind.IntentionView i = m.intentions().get(0);
         assertEquals("waiting", i.state());
@@ -78,6 +78,19 @@ class AgentMindTest {
         // the state it goes to sleep in: delivered, nothing left to do
         awaitMind(arch, "the delivery, nothing pending", s -> s.beliefs().contains("delivered(parcel)[source(self)]")
                 && s.actions().isEmpty() && s.intentions().isEmpty() && s.goals().isEmpty());
+    }
+
+    @Test
+    void rulesAreKeptApartFromBeliefs() throws Exception {
+        bridge.mind().setPeriodNanos(SECOND / 100);
+        RosAgArch arch = agents.start(dir, "ruler", """
+                battery(80).
+                charged :- battery(B) & B > 50.
+                """);
+        AgentMind m = awaitMind(arch, "its state", s -> !s.beliefs().isEmpty());
+        assertTrue(m.beliefs().contains("battery(80)[source(self)]"), m.beliefs().toString());
+        assertTrue(m.beliefs().stream().noneMatch(b -> b.contains(":-")), m.beliefs().toString());
+        assertEquals(List.of("charged[source(self)] :- (battery(B) & (B > 50))"), m.rules());
     }
 
     @Test

@@ -23,7 +23,7 @@ class MindRecorderTest {
 
     private final MindRecorder.Reader reader = (events, messages) -> {
         reads++;
-        return new AgentMind("bob", ++cycle, cycle * 10, beliefs, List.of(), List.of(), List.of(), events.items(),
+        return new AgentMind("bob", ++cycle, cycle * 10, beliefs, List.of(), List.of(), List.of(), List.of(), events.items(),
                 messages.items(), 0);
     };
 
