@@ -13,7 +13,8 @@ InputLimits = jpype.JClass('rason.core.InputLimits')
 PORTS = {'actions': jpype.JClass('rason.action.ActionPort'),
          'perception': jpype.JClass('rason.perception.PerceptionPort'),
          'fleet': jpype.JClass('rason.messaging.FleetPort'),
-         'mind': jpype.JClass('rason.mind.MindPort')}
+         'mind': jpype.JClass('rason.mind.MindPort'),
+         'warnings': jpype.JClass('rason.core.RateLimitedLog')}
 
 
 class RecordingPort(object):
@@ -74,7 +75,9 @@ def test_durations_go_in_nanoseconds_and_identity_last():
     assert ('actions.setDecomposerGraceNanos', 250000000) in calls
     assert ('perception.setTtlNanos', 2000000000) in calls and ('fleet.setPresenceTimeoutNanos', 2000000000) in calls
     assert ('fleet.setPresenceBeliefs', True) in calls and ('perception.setDefaultManager', 'per_source') in calls
+    assert ('warnings.setPeriodNanos', 10000000000) in calls
     assert calls[-2:] == [('fleet.setMasId', '/r1/rason_mas'), ('fleet.setIncarnation', 42)]
+    assert ('warnings.setPeriodNanos', 2500000000) in pushed(warning_period=2.5).calls
 
 
 def test_input_limits_and_mind_bounds():

@@ -101,11 +101,12 @@ class TestPreemption(unittest.TestCase):
         self.percepts = []
 
     def tearDown(self):
-        if self.mas is not None:
-            stop_mas(self.mas)
+        # both stop at once: each takes about a second to exit, and nothing here waits on the other
         if self.decomposer.poll() is None:
             self.decomposer.send_signal(signal.SIGTERM)
-            self.decomposer.wait(20)
+        if self.mas is not None:
+            stop_mas(self.mas)
+        self.decomposer.wait(20)
 
     def start_agents(self, **params):
         self.mas = start_mas(NS, MAS2J, **params)

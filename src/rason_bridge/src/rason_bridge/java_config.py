@@ -49,6 +49,7 @@ def push(java_bridge, settings, mas_id, incarnation):
     except jpype.JException as e:
         raise ParamError('perception_manager: %s' % e.getMessage())
     push_input_limits(java_bridge.limits(), settings)
+    java_bridge.warnings().setPeriodNanos(_nanos(settings, 'warning_period'))
     push_trust(java_bridge, settings.trust)
     if settings.mind_period > 0:
         java_bridge.mind().setLimits(settings.mind_max_items, settings.mind_max_chars)

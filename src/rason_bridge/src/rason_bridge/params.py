@@ -222,6 +222,10 @@ PARAMS = (
           'is named once in a warning', _names, shown_default='[]'),
     Param('expect_within', 'float', 10.0, 's (wall clock)', 'more than 0 s',
           'how long `expected_sources` may stay silent after the agents start', _seconds(1e-9)),
+    Param('warning_period', 'float', 10.0, 's (wall clock)', 'more than 0 s',
+          'the period of the rate-limited warnings about dropped input, refused messages and ignored events: '
+          'at most 10 lines of a kind per period, then one line saying how many more there were',
+          _seconds(1e-9)),
     _limit('max_literal_length', 4096, 'characters of one literal'),
     _limit('max_content_length', 65536, 'characters of one message\'s content'),
     _limit('max_nesting', 32, 'brackets open at once'),

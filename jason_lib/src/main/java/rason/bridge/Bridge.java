@@ -134,6 +134,11 @@ public final class Bridge implements MasHost {
         return outbox;
     }
 
+    /** The rate limit of the warnings about dropped input, refused messages and ignored events; the node sets its period. */
+    public RateLimitedLog warnings() {
+        return limited;
+    }
+
     /** The bounds on perceptions and agent messages; the node sets them. */
     public InputLimits limits() {
         return limits;

@@ -39,7 +39,7 @@ public final class RateLimitedLog {
 
     private final Logger logger;
     private final int lines;
-    private final long periodNanos;
+    private volatile long periodNanos;
     private final Map<String, Window> windows = new LinkedHashMap<>() { // guarded by itself
         @Override
         protected boolean removeEldestEntry(Map.Entry<String, Window> eldest) {
@@ -58,6 +58,20 @@ public final class RateLimitedLog {
         this.logger = logger;
         this.lines = lines;
         this.periodNanos = periodNanos;
+    }
+
+    /**
+     * From now on a period lasts periodNanos; the periods already under way end by the new
+     * length (a shorter one ends them sooner).
+     */
+    public void setPeriodNanos(long periodNanos) {
+        if (periodNanos <= 0)
+            throw new IllegalArgumentException("a period is more than 0 ns");
+        this.periodNanos = periodNanos;
+    }
+
+    public long periodNanos() {
+        return periodNanos;
     }
 
     /**

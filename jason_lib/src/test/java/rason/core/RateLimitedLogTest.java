@@ -118,4 +118,22 @@ public class RateLimitedLogTest {
         LogRecord b = lines.records.stream().filter(r -> r.getMessage().startsWith("b: …")).findFirst().orElseThrow();
         assertEquals(Level.INFO, b.getLevel(), "the summary has the level of the lines it stands for");
     }
+
+    @Test
+    void aShorterPeriodEndsThePeriodUnderWaySooner() {
+        for (int i = 0; i < 8; i++)
+            log.warn("k", "line " + i, 100 * S);
+        log.setPeriodNanos(2 * S);
+        log.tick(101 * S);
+        assertEquals(5, lines.records.size(), "no summary before the new period's end");
+        log.tick(102 * S);
+        assertEquals("k: … 3 more like this in the last 2 s", lines.texts().get(5));
+        assertEquals(2 * S, log.periodNanos());
+    }
+
+    @Test
+    void aPeriodIsMoreThanZero() {
+        org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> log.setPeriodNanos(0));
+        assertEquals(10 * S, log.periodNanos());
+    }
 }
