@@ -188,8 +188,10 @@ class Side:
 
         self.conn = Connection(sock, lambda k, b: self.session.handle(k, b), closed,
                                max_queued_bytes=1 << 20)
+        self.ready = []
         self.session = Session(side, robot, self.conn, md5.get, self._publish, self._presence,
-                               log_error=self._error, log_info=lambda text: None)
+                               log_error=self._error, log_info=lambda text: None,
+                               on_ready=self.ready.append)
         self.session.start()
         self.conn.start()
 
@@ -253,6 +255,22 @@ def test_a_robot_side_of_another_robot_is_refused_with_the_reason(pair):
     assert world.closed_reason.wait(5) and robot.closed_reason.wait(5)
     robot.wait(lambda: robot.errors)
     assert any("paths are crossed" in e for e in world.errors + robot.errors)
+    assert world.ready == [] and robot.ready == []   # never put in place of a working link
+
+
+def test_an_accepted_peer_is_reported_ready_once(pair):
+    world, robot = pair()
+    world.wait(lambda: world.ready and robot.ready)
+    assert world.ready == [world.session] and robot.ready == [robot.session]
+
+
+def test_a_presence_report_before_the_hello_is_refused():
+    a, b = socket.socketpair(socket.AF_UNIX, socket.SOCK_STREAM)
+    world = Side(a, 'world', 'rover')
+    b.sendall(framing.json_record(framing.PRESENCE, {'subscribed': [], 'publishing': []}))
+    assert world.closed_reason.wait(5)
+    assert world.presence == [] and any('before the HELLO' in e for e in world.errors)
+    b.close()
 
 
 def test_two_robot_sides_refuse_each_other():

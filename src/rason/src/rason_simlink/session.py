@@ -15,9 +15,11 @@ from .reporting import RateLimited
 class Session:
 
     def __init__(self, side, robot, connection, local_md5, publish, on_presence=None,
-                 log_error=print, log_info=print, limiter=None):
+                 log_error=print, log_info=print, limiter=None, on_ready=None):
         """publish(topic, payload) puts a received message on this side's master;
-        on_presence(report) (world side) applies the robot side's presence report."""
+        on_presence(report) (world side) applies the robot side's presence report;
+        on_ready(session) is called once the peer's HELLO was accepted."""
+        self._on_ready = on_ready
         self.side, self.robot = side, robot
         self.peer_ready = False
         self._conn = connection
@@ -66,14 +68,17 @@ class Session:
         if kind == framing.HELLO:
             self._on_hello(value)
         elif kind == framing.REFUSE:
-            self._log_error('sim link %s: the %s side refused the link: %s'
-                            % (self.robot, self._peer_side(), value.get('reason')))
+            self._limiter.report('refused', self._log_error,
+                                 'sim link %s: the %s side refused the link: %s'
+                                 % (self.robot, self._peer_side(), value.get('reason')))
             self._conn.close('refused by the peer')
         elif kind == framing.TOPIC:
             self._on_topic(value)
         elif kind == framing.PRESENCE:
             if self.side != 'world' or self._on_presence is None:
                 self._refuse('a presence report goes from the robot side to the world side')
+            elif not self.peer_ready:
+                self._refuse('a presence report before the HELLO')
             else:
                 self._on_presence(value)
 
@@ -95,9 +100,12 @@ class Session:
             self.peer_ready = True
             self._log_info('sim link %s: linked to the %s side' % (self.robot,
                                                                   self._peer_side()))
+            if self._on_ready is not None:
+                self._on_ready(self)
 
     def _refuse(self, reason):
-        self._log_error('sim link %s: refusing the link: %s' % (self.robot, reason))
+        self._limiter.report('refusing', self._log_error,
+                             'sim link %s: refusing the link: %s' % (self.robot, reason))
         self._conn.send_json(framing.REFUSE, {'reason': reason})
         self._conn.flush_and_close('refused: %s' % reason)
 

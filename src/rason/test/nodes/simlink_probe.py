@@ -49,18 +49,21 @@ class Probe:
             return True
 
     def op_clock(self, timeout=20.0):
-        """Two /clock values heard one after the other."""
-        self._wait(lambda: self.clocks, timeout)
-        first = self.clocks[-1] if self.clocks else None
-        self._wait(lambda: self.clocks and self.clocks[-1] != first, timeout)
-        return {'first': first, 'then': self.clocks[-1] if self.clocks else None}
+        """Two /clock values heard from now on, one after the other."""
+        with self.cond:
+            self.clocks = []
+        self._wait(lambda: len(self.clocks) >= 2, timeout)
+        with self.cond:
+            return {'first': self.clocks[0] if self.clocks else None,
+                    'then': self.clocks[-1] if len(self.clocks) >= 2 else None}
 
     def op_odom(self, timeout=20.0):
         """The next odometry stamp and the last /clock heard when it came."""
-        count = len(self.odoms)
-        self._wait(lambda: len(self.odoms) > count and self.clocks, timeout)
         with self.cond:
-            if len(self.odoms) <= count:
+            self.odoms = []
+        self._wait(lambda: self.odoms and self.clocks, timeout)
+        with self.cond:
+            if not self.odoms or not self.clocks:
                 return {'stamp': None}
             return {'stamp': self.odoms[-1], 'clock': self.clocks[-1]}
 
