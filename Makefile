@@ -72,19 +72,20 @@ $(FLEET_KEY):
 	@PYTHONPATH=$(CURDIR)/src/rason_bridge/src $(PY) -m rason_bridge.fleet_key $@
 
 # The robots-on-hosts tests (network namespaces; root) mostly wait on shaped links and
-# timeouts, so make test runs them beside the other pytest tests, each with its own log.
+# timeouts, so make test runs them beside everything else, with a log of their own, and
+# waits for them at the end.
 HOSTS_TESTS = src/rason/test/test_hosts_*.py
 
 test: setup
-	@$(MAKE) --no-print-directory docs javatest
 	@mkdir -p build; rm -f build/pytest_hosts.rc; \
 	  ( $(ROSENV) $(PY) -m pytest -q $(HOSTS_TESTS) > build/pytest_hosts.log 2>&1; echo $$? > build/pytest_hosts.rc ) & \
-	  $(ROSENV) $(PY) -m pytest -q src --ignore-glob='$(HOSTS_TESTS)'; status=$$?; wait; \
+	  $(MAKE) --no-print-directory docs javatest && \
+	  { $(ROSENV) $(PY) -m pytest -q src --ignore-glob='$(HOSTS_TESTS)'; } && \
+	  $(MAKE) --no-print-directory rostest; status=$$?; wait; \
 	  hosts=$$(cat build/pytest_hosts.rc); \
 	  if [ "$$hosts" != 0 ]; then tail -80 build/pytest_hosts.log; fi; \
 	  echo "pytest (robots on hosts, log build/pytest_hosts.log): $$(tail -1 build/pytest_hosts.log)"; \
 	  [ $$status = 0 ] && [ "$$hosts" = 0 ]
-	@$(MAKE) --no-print-directory rostest
 
 # The site under build/site, offline (no CDN, no web fonts); --strict fails on a missing page
 # or include, check_site_links on a missing anchor.
