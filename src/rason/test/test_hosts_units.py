@@ -250,3 +250,14 @@ def test_hosts_name_their_namespaces_after_the_run():
     assert (hosts.address('broker'), hosts.address('r1')) == ('198.18.0.1', '198.18.0.2')
     with pytest.raises(KeyError):
         hosts.namespace('r9')
+
+
+def test_a_run_is_owned_while_its_recording_process_lives(tmp_path):
+    from rason_hosts.owners import owner_alive, owner_file, record_owner
+    folder = str(tmp_path / 'owners')
+    assert not owner_alive(folder, 'rason', 'abc123')               # never recorded
+    record_owner(folder, 'rason', 'abc123')
+    assert owner_alive(folder, 'rason', 'abc123')
+    with open(owner_file(folder, 'rason', 'abc123'), 'w') as f:    # the pid reused by another process
+        f.write('%d 1\n' % os.getpid())
+    assert not owner_alive(folder, 'rason', 'abc123')

@@ -13,6 +13,8 @@ import re
 import secrets
 import time
 
+from rason_hosts.owners import owner_alive, owner_file, record_owner
+
 OWNERS_DIR = '/run/rason-budget'   # one file per live run: the owning process (pid, start time)
 DEFAULT_PREFIX = 'rason'
 ROBOT_NAME = re.compile(r'^[a-z0-9][a-z0-9_]{0,23}$')
@@ -207,25 +209,12 @@ def _cpu_stat(path):
     return out
 
 
-def _start_time(pid):
-    try:
-        with open('/proc/%d/stat' % pid) as f:
-            return f.read().rsplit(')', 1)[1].split()[19]
-    except (OSError, IndexError):
-        return None
-
-
 def _owner_file(prefix, run_id):
-    return os.path.join(OWNERS_DIR, '%s-%s' % (prefix, run_id))
+    return owner_file(OWNERS_DIR, prefix, run_id)
 
 
 def _owner_alive(prefix, run_id):
-    try:
-        with open(_owner_file(prefix, run_id)) as f:
-            pid, started = f.read().split()
-    except (OSError, ValueError):
-        return False
-    return _start_time(int(pid)) == started
+    return owner_alive(OWNERS_DIR, prefix, run_id)
 
 
 def leftover_groups(hierarchy, prefix=DEFAULT_PREFIX, all_runs=False):
@@ -286,9 +275,7 @@ class Budget(object):
         self.hierarchy = self.hierarchy or detect()
         if self.clean_leftovers:
             cleanup(self.hierarchy, self.prefix)
-        os.makedirs(OWNERS_DIR, exist_ok=True)
-        with open(_owner_file(self.prefix, self.run_id), 'w') as f:
-            f.write('%d %s\n' % (os.getpid(), _start_time(os.getpid())))
+        record_owner(OWNERS_DIR, self.prefix, self.run_id)
         atexit.register(self.close)
         try:
             for robot, cores in sorted(self.robots.items()):

@@ -23,6 +23,7 @@ import weakref
 
 from . import rules
 from .addresses import host_address, HOST_SUBNET
+from .owners import owner_alive, owner_file, record_owner
 
 NETNS_DIR = '/var/run/netns'
 OWNERS_DIR = '/run/rason-hosts'   # one file per live run: the owning process (pid, start time)
@@ -58,25 +59,12 @@ def namespace_pids(namespace):
     return [int(pid) for pid in result.stdout.split()]
 
 
-def _start_time(pid):
-    try:
-        with open('/proc/%d/stat' % pid) as f:
-            return f.read().rsplit(')', 1)[1].split()[19]
-    except (OSError, IndexError):
-        return None
-
-
 def _owner_file(prefix, run_id):
-    return os.path.join(OWNERS_DIR, '%s-%s' % (prefix, run_id))
+    return owner_file(OWNERS_DIR, prefix, run_id)
 
 
 def _owner_alive(prefix, run_id):
-    try:
-        with open(_owner_file(prefix, run_id)) as f:
-            pid, started = f.read().split()
-    except (OSError, ValueError):
-        return False
-    return _start_time(int(pid)) == started
+    return owner_alive(OWNERS_DIR, prefix, run_id)
 
 
 def _kill_namespace(namespace):
@@ -237,9 +225,7 @@ class Hosts:
         ensure_netns_dir()
         if self.clean_leftovers:
             cleanup(self.prefix)
-        os.makedirs(OWNERS_DIR, exist_ok=True)
-        with open(_owner_file(self.prefix, self.run_id), 'w') as f:
-            f.write('%d %s\n' % (os.getpid(), _start_time(os.getpid())))
+        record_owner(OWNERS_DIR, self.prefix, self.run_id)
         atexit.register(self.close)
         self._tmp = tempfile.mkdtemp(prefix='rason-hosts-%s-' % self.run_id)
         try:
