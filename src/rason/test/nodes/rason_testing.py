@@ -8,6 +8,7 @@ import signal
 import subprocess
 import threading
 import time
+import xmlrpc.client
 
 import rosgraph
 import rospkg
@@ -121,6 +122,22 @@ def feedback(agent, result, action_id, event_type=Event.ACTION_FEEDBACK):
 def wait_for_subscribers(pub, count=1, timeout=10.0):
     """True once ``pub`` has ``count`` subscribers, False if it has not after ``timeout`` s."""
     return bool(poll(lambda: pub.get_num_connections() >= count, timeout))
+
+
+def wait_for_link(publisher_node, topic, subscriber_node, timeout=30.0):
+    """True once publisher_node's publication of topic has its connection to subscriber_node up
+    (what it publishes before that is lost), read from the publisher's own bus info; False if
+    not after timeout s. Names are resolved."""
+    master = rosgraph.Master('/rason_testing')
+
+    def linked():
+        try:
+            code, _, info = xmlrpc.client.ServerProxy(master.lookupNode(publisher_node)).getBusInfo(
+                '/rason_testing')
+        except Exception:   # the node not registered or not answering yet
+            return False
+        return code == 1 and any(c[1] == subscriber_node and c[2] == 'o' and c[4] == topic for c in info)
+    return bool(poll(linked, timeout))
 
 
 def start_agents(log, timeout=20.0):

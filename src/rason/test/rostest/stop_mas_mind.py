@@ -54,6 +54,9 @@ class TestStopMasMind(unittest.TestCase):
             sub.unregister()
             os.killpg(recorder.pid, signal.SIGINT)  # rosbag record closes the bag on SIGINT
             recorder.wait(20.0)
+        # the bag is written as run.bag.active and renamed by rosbag's recorder process, which
+        # can end after the `rosbag record` wrapper waited for above
+        wait_for(lambda: os.path.exists(bag), 20.0, 'rosbag record to close %s' % bag)
         last = ended()[-1]
         self.assertEqual((list(last.goals), list(last.intentions)), ([], []))
 

@@ -15,7 +15,7 @@ import rospy
 import rostest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
-from rason_testing import LogWatcher, run_refused_node, wait_for_subscribers  # noqa: E402
+from rason_testing import LogWatcher, run_refused_node, wait_for_link, wait_for_subscribers  # noqa: E402
 from nav_msgs.msg import Odometry  # noqa: E402
 from rason_msgs.msg import Perception  # noqa: E402
 from sensor_msgs.msg import BatteryState  # noqa: E402
@@ -84,6 +84,10 @@ class TestSynthesizer(unittest.TestCase):
         if not wait_for_subscribers(probe, timeout=30):
             raise AssertionError('rason_mas does not subscribe to jason/perception')
         probe.unregister()
+        # generic_synthesizer sends each state once: its link to rason_mas must be up first
+        if not wait_for_link(rospy.resolve_name('generic_synthesizer'), rospy.resolve_name('jason/perception'),
+                             rospy.resolve_name('rason_mas')):
+            raise AssertionError('generic_synthesizer is not connected to rason_mas on jason/perception')
 
     def said(self, text, timeout=10.0):
         return self.log.wait_for(r'^\[%s\] %s$' % (AGENT, text), timeout=timeout)
