@@ -46,8 +46,12 @@ class TestTurtlebot2Profile(unittest.TestCase):
 
     @classmethod
     def _watch_graph(cls):
-        """The master's (publishers, subscribers) once the velocity topic is wired both ways."""
+        """The master's (publishers, subscribers) once the base's topics are wired both ways:
+        the velocity published and read, the odometry published and read by the fault injector
+        (nodes register their topics one by one, so a snapshot taken early can miss one). If
+        that never happens, the last snapshot, for the assertions to say what was missing."""
         master = rosgraph.Master(rospy.get_name())
+        last = [None]
 
         def wired():
             try:
@@ -55,16 +59,18 @@ class TestTurtlebot2Profile(unittest.TestCase):
             except Exception:       # the launch's master is not up yet
                 return None
             pubs, subs = dict(publishers), dict(subscribers)
-            if pubs.get(KOBUKI_VELOCITY) and subs.get(KOBUKI_VELOCITY):
+            last[0] = pubs, subs
+            if (pubs.get(KOBUKI_VELOCITY) and subs.get(KOBUKI_VELOCITY) and pubs.get('/rover/odom')
+                    and '/rover/fault_injector' in subs.get('/rover/odom', [])):
                 return pubs, subs
             return None
-        cls.graph = poll(wired, timeout=60, interval=0.2)
+        cls.graph = poll(wired, timeout=60, interval=0.2) or last[0]
 
     def test_the_velocity_goes_through_kobuki_node_s_topic_only(self):
-        self.assertIsNotNone(self.graph, 'nobody published and subscribed %s' % KOBUKI_VELOCITY)
+        self.assertIsNotNone(self.graph, 'no master answered')
         pubs, subs = self.graph
-        self.assertEqual(pubs[KOBUKI_VELOCITY], ['/rover/fault_injector'])
-        self.assertEqual(subs[KOBUKI_VELOCITY], ['/rason_sim'])
+        self.assertEqual(pubs.get(KOBUKI_VELOCITY), ['/rover/fault_injector'])
+        self.assertEqual(subs.get(KOBUKI_VELOCITY), ['/rason_sim'])
         self.assertNotIn('/rover/cmd_vel', pubs)
         self.assertNotIn('/rover/cmd_vel', subs)
         self.assertIn('/rason_sim', pubs.get('/rover/odom', []))
