@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Map;
 import java.util.function.BooleanSupplier;
 
 import org.junit.jupiter.api.extension.AfterEachCallback;
@@ -46,6 +47,26 @@ public final class RunningAgents implements AfterEachCallback {
     public RosAgArch start(Path dir, String agent, String program, String options) throws Exception {
         Files.writeString(dir.resolve(agent + ".asl"), program);
         Files.writeString(dir.resolve("test.mas2j"), "MAS test { agents: " + agent + " " + options + "; }");
+        startMas(dir);
+        RosAgArch arch = arch(agent);
+        assertNotNull(arch, "agent " + agent + " registered");
+        return arch;
+    }
+
+    /** Several agents in one MAS, each from its program (name to program, in .mas2j order). */
+    public void startAll(Path dir, Map<String, String> programs) throws Exception {
+        StringBuilder agents = new StringBuilder();
+        for (Map.Entry<String, String> agent : programs.entrySet()) {
+            Files.writeString(dir.resolve(agent.getKey() + ".asl"), agent.getValue());
+            agents.append(agent.getKey()).append("; ");
+        }
+        Files.writeString(dir.resolve("test.mas2j"), "MAS test { agents: " + agents + "}");
+        startMas(dir);
+        for (String agent : programs.keySet())
+            assertNotNull(arch(agent), "agent " + agent + " registered");
+    }
+
+    private void startMas(Path dir) throws Exception {
         bridge.attach();
         bridge.actions().setTimeoutNanos(60 * SECOND);
         bridge.tick(100 * SECOND);
@@ -56,9 +77,6 @@ public final class RunningAgents implements AfterEachCallback {
             // the announcement of the new agent: the tests look at what the agent queues
         }
         mas.start();
-        RosAgArch arch = arch(agent);
-        assertNotNull(arch, "agent " + agent + " registered");
-        return arch;
     }
 
     /** The RosAgArch of a running agent, null if there is none of that name. */
