@@ -1,6 +1,7 @@
 """``rosrun rason_dashboard dashboard``: every robot's agents, live, in a web page;
-``rosrun rason_dashboard dashboard --bag FILE``: the same page over a recorded bag, with a
-time slider (no ROS master needed, nothing published).
+``rosrun rason_dashboard dashboard --bag FILE [--bag FILE ...]``: the same page over a recorded
+run, with a time slider (no ROS master needed, nothing published); one bag per robot's host
+replays as one run.
 
 Live ~params: ``bind`` (127.0.0.1), ``port`` (8642; 0 takes a free one), ``messages_topic``
 (/rason/messages). Replay takes ``--bind`` and ``--port`` instead.
@@ -13,26 +14,29 @@ DEFAULT_PORT = 8642
 
 
 def replay(argv):
-    p = argparse.ArgumentParser(prog='dashboard', description='replay a bag in the Rason dashboard')
-    p.add_argument('--bag', required=True, help='a bag recorded with jason/mind (e.g. faulty_helper.launch record:=true)')
+    p = argparse.ArgumentParser(prog='dashboard', description='replay a recorded run in the Rason dashboard')
+    p.add_argument('--bag', required=True, action='append',
+                   help='a bag recorded with jason/mind (e.g. faulty_helper.launch record:=true); '
+                        'repeat it for the bags of one run recorded on several hosts')
     p.add_argument('--bind', default=DEFAULT_BIND, help='address to serve on (default %(default)s)')
     p.add_argument('--port', type=int, default=DEFAULT_PORT, help='port (default %(default)s; 0: a free one)')
     args = p.parse_args(argv)
-    from rason_dashboard.replay import load_bag
+    from rason_dashboard.replay import load_bags
     from rason_dashboard.server import DashboardServer
+    bags = ' '.join(args.bag)
     try:
-        timeline, counts = load_bag(args.bag)
+        timeline, counts = load_bags(args.bag)
     except Exception as e:  # rosbag's errors have no common base worth naming
-        sys.exit('dashboard: cannot read %s: %s' % (args.bag, e))
+        sys.exit('dashboard: cannot read %s: %s' % (bags, e))
     if not counts['minds']:
-        print('dashboard: %s has no rason_msgs/MindState (record jason/mind to see the agents)' % args.bag,
+        print('dashboard: %s has no rason_msgs/MindState (record jason/mind to see the agents)' % bags,
               file=sys.stderr)
     try:
         server = DashboardServer(timeline, args.bind, args.port).start()
     except OSError as e:
         sys.exit('dashboard: cannot serve on %s:%d: %s' % (args.bind, args.port, e))
     print('dashboard: replaying %s (%d mind states, %d messages, %d statuses) on %s'
-          % (args.bag, counts['minds'], counts['messages'], counts['statuses'], server.url), flush=True)
+          % (bags, counts['minds'], counts['messages'], counts['statuses'], server.url), flush=True)
     try:
         server.wait()
     except KeyboardInterrupt:
