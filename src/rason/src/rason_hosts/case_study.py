@@ -141,14 +141,15 @@ class CaseStudyOnHosts:
 
     loss: % of frames lost each way on each robot's link; delay_ms: added each way to each
     robot's connection to the broker (a relay on the broker's host); partition: seconds
-    Helper's link is cut once its search began (None: no cut); rate: the simulator's
+    Helper's link is cut partition_after s after its search began (None: no cut); rate: the simulator's
     real-time factor (0: as fast as lockstep allows)."""
 
     def __init__(self, hosts, folder, fault='both_actuators', recovery=False, loss=0, delay_ms=0,
-                 partition=None, rate=0, seed=1, timeout=240.0, echo=None):
+                 partition=None, partition_after=0.0, rate=0, seed=1, timeout=240.0, echo=None):
         self.hosts, self.folder = hosts, folder
         self.fault, self.recovery, self.loss, self.delay_ms = fault, recovery, loss, delay_ms
-        self.partition_seconds, self.rate, self.seed = partition, rate, seed
+        self.partition_seconds, self.partition_after = partition, partition_after
+        self.rate, self.seed = rate, seed
         self.timeout = timeout
         self.transcript = Transcript(echo)
         self.marks = {}
@@ -192,6 +193,8 @@ class CaseStudyOnHosts:
         cut = None
         if self.partition_seconds:
             search = self.transcript.wait(SEARCH, self.timeout, "Helper's search")
+            if self.partition_after:
+                time.sleep(self.partition_after)    # the scenario's cut comes that long into the search
             self.marks['cut'] = time.time()
             cut = self.hosts.partition('helper', self.partition_seconds)
             self.marks['search'] = search[0]

@@ -1,12 +1,17 @@
 """rosrun rason hosts cleanup [--all] [--prefix P] | list: leftovers of the hosts harness;
 rosrun rason hosts case-study [--fault F] [--loss P] [--delay-ms D] [--partition S] [--recovery]:
-the case study with each robot on a host of its own (needs root)."""
+the case study with each robot on a host of its own (needs root);
+rosrun rason hosts campaign --runs N --out DIR [--recovery]: many such runs, the link drawn,
+each beside the same run on a clean link (link_campaign)."""
 import argparse
+import os
 import re
 import sys
 import tempfile
+import time
 
 from .hosts import DEFAULT_PREFIX, cleanup, list_namespaces
+from .link_campaign import FAULTS
 
 
 def main(argv=None):
@@ -24,9 +29,20 @@ def main(argv=None):
     play.add_argument('--partition', type=float, default=0, help="s Helper's link is cut once its search began")
     play.add_argument('--recovery', action='store_true', help='the fault-tolerance mission')
     play.add_argument('--rate', type=float, default=0, help="the simulator's real-time factor (0: lockstep)")
+    campaign = sub.add_parser('campaign', help='the case study across hosts, many runs, the link as a factor')
+    campaign.add_argument('--runs', type=int, default=10,
+                          help='drawn scenarios; each runs on its link and on a clean one')
+    campaign.add_argument('--seed', type=int, default=1)
+    campaign.add_argument('--faults', default='all', help='all, or a comma list of ' + ','.join(FAULTS))
+    campaign.add_argument('--recovery', action='store_true', help='the fault-tolerance mission, judged by true poses')
+    campaign.add_argument('--rate', type=float, default=1, help="the simulator's real-time factor (0: lockstep)")
+    campaign.add_argument('--timeout', type=float, default=240, help='wall s a run may take to its diagnosis')
+    campaign.add_argument('--out', required=True, help='folder for report.md, results.json and the runs\' logs')
     args = parser.parse_args(argv)
     if args.command == 'case-study':
         return _case_study(args)
+    if args.command == 'campaign':
+        return _campaign(args, argv)
     if args.command == 'list':
         for namespace in list_namespaces():
             if namespace.startswith(args.prefix + '-'):
@@ -64,6 +80,58 @@ def _case_study(args):
     if outcome.mission:
         print('mission completed: %s by %s (recovery %s)' % outcome.mission, flush=True)
     return 0
+
+
+def _campaign(args, argv_seen=None):
+    from .case_study import HOST_NAMES, CaseStudyOnHosts
+    from .hosts import Hosts, HostsError
+    from . import link_campaign
+
+    faults = link_campaign.FAULTS if args.faults == 'all' else tuple(args.faults.split(','))
+    unknown = sorted(set(faults) - set(link_campaign.FAULTS))
+    if unknown:
+        print('campaign: unknown fault(s) %s; known: %s' % (', '.join(unknown), ', '.join(link_campaign.FAULTS)),
+              file=sys.stderr)
+        return 2
+    os.makedirs(args.out, exist_ok=True)
+    plan = link_campaign.draw_plan(args.runs, args.seed, faults, args.recovery)
+    records = []
+    for scenario in plan:
+        for link, played in (('drawn', scenario), ('clean', link_campaign.on_clean_link(scenario))):
+            folder = os.path.join(args.out, 'runs', '%03d-%s' % (scenario['run'], link))
+            os.makedirs(folder, exist_ok=True)
+            record = {'scenario': played, 'link': link}
+            diagnosis = failure = mission = closest = back = None
+            with Hosts(HOST_NAMES) as hosts:
+                partition = played['partition'] or {}
+                run = CaseStudyOnHosts(hosts, folder, fault=played['fault'], recovery=played['recovery'],
+                                       loss=played['loss'], delay_ms=played['delay_ms'],
+                                       partition=partition.get('seconds'), partition_after=partition.get('after', 0),
+                                       rate=args.rate, seed=played['seed'], timeout=args.timeout)
+                try:
+                    outcome = run.play()
+                    diagnosis, mission = outcome.diagnosis, outcome.mission
+                    closest, back = outcome.mission_judged()
+                    record['diagnosis_s'] = run.marks['diagnosis'] - run.marks['launched']
+                except HostsError as e:
+                    failure = str(e).splitlines()[0]
+            record['verdict'] = link_campaign.judge(played, diagnosis, failure, mission, closest, back)
+            records.append(record)
+            link_campaign.save(records, os.path.join(args.out, 'results.json'))
+            print('[%d/%d %s] %s on %s: %s%s' % (
+                scenario['run'], len(plan), link, played['fault'], link_campaign.link_label(played),
+                record['verdict']['outcome'],
+                ' in %.1f s' % record['diagnosis_s'] if record.get('diagnosis_s') else ''), flush=True)
+    title = 'The case study across hosts: %d scenarios (seed %d), each on its drawn link and on a clean one' % (
+        len(plan), args.seed)
+    how = ('Made by `rosrun rason hosts %s` on %s UTC (%d cores, shared), the simulator at real-time factor %g; '
+           'times are wall seconds from the robots\' launch to Faulty\'s diagnosis. Each run\'s logs: `runs/`, '
+           'not committed.' % (' '.join(sys.argv[1:] if argv_seen is None else argv_seen),
+                               time.strftime('%Y-%m-%d %H:%M', time.gmtime()), os.cpu_count(), args.rate))
+    with open(os.path.join(args.out, 'report.md'), 'w') as f:
+        f.write(link_campaign.report(records, title, how))
+    print('report: %s' % os.path.join(args.out, 'report.md'), flush=True)
+    return 1 if any(r['verdict']['outcome'] == 'wrong' for r in records) else 0
 
 
 if __name__ == '__main__':

@@ -1,0 +1,80 @@
+"""The campaign across hosts without hosts (rason_hosts.link_campaign): the plan drawn from a
+seed, each run judged by its diagnosis and mission, and the report of drawn against clean links."""
+import json
+
+from rason_hosts.link_campaign import (CLEAN, DELAYS_MS, FAULTS, LOSSES, MISSION_TOLERANCE, PARTITION_AFTER,
+                                       PARTITION_SECONDS, draw_plan, judge, link_label, on_clean_link, report, save)
+
+
+def test_the_plan_is_drawn_from_the_seed_with_every_fault_in_turn():
+    plan = draw_plan(40, seed=3)
+    assert plan == draw_plan(40, seed=3)
+    assert plan != draw_plan(40, seed=4)
+    assert [s['fault'] for s in plan[:8]] == list(FAULTS) * 2
+    assert [s['seed'] for s in plan[:3]] == [3001, 3002, 3003]
+    assert {s['loss'] for s in plan} == set(LOSSES)
+    assert {s['delay_ms'] for s in plan} == set(DELAYS_MS)
+    assert all(s['loss'] or s['delay_ms'] or s['partition'] for s in plan)
+    cuts = [s['partition'] for s in plan if s['partition']]
+    assert 0 < len(cuts) < len(plan)
+    for cut in cuts:
+        assert PARTITION_SECONDS[0] <= cut['seconds'] <= PARTITION_SECONDS[1]
+        assert PARTITION_AFTER[0] <= cut['after'] <= PARTITION_AFTER[1]
+    assert draw_plan(2, 1, faults=('odometry',), recovery=True)[1]['recovery'] is True
+
+
+def test_the_clean_twin_keeps_the_fault_and_seed_and_clears_the_link():
+    scenario = {'run': 2, 'seed': 1002, 'fault': 'odometry', 'recovery': False, 'loss': 20, 'delay_ms': 100,
+                'partition': {'seconds': 5.0, 'after': 1.0}}
+    twin = on_clean_link(scenario)
+    assert twin == dict(scenario, **CLEAN)
+    assert scenario['loss'] == 20      # the drawn scenario is untouched
+    assert link_label(twin) == 'clean'
+    assert link_label(scenario) == '20 % loss, 100 ms, cut 5.0 s at +1.0 s'
+
+
+def test_a_run_is_correct_wrong_or_undiagnosed_with_its_reason():
+    scenario = {'fault': 'left_actuator'}
+    assert judge(scenario, ('left_actuator', 'seen turning'))['outcome'] == 'correct'
+    assert judge(scenario, ('right_actuator', 'seen turning'))['outcome'] == 'wrong'
+    verdict = judge(scenario, ('undiagnosed', 'no diagnosis within the help timeout'))
+    assert (verdict['outcome'], verdict['reason']) == ('undiagnosed', 'no diagnosis within the help timeout')
+    verdict = judge(scenario, failure="waited 240 s for Faulty's diagnosis in vain; last lines:")
+    assert (verdict['outcome'], verdict['component']) == ('undiagnosed', None)
+    assert 'mission_completed' not in verdict
+
+
+def test_a_mission_is_completed_only_when_reported_and_seen_by_the_true_poses():
+    scenario = {'fault': 'left_actuator', 'recovery': True}
+    near = MISSION_TOLERANCE / 2
+    done = ('true', 'faulty', 'compensate')
+    assert judge(scenario, ('left_actuator', ''), mission=done, closest=near, back=near)['mission_completed']
+    assert not judge(scenario, ('left_actuator', ''), mission=done, closest=2 * MISSION_TOLERANCE,
+                     back=near)['mission_completed']
+    assert not judge(scenario, ('left_actuator', ''), mission=('false', '', 'delegate'), closest=near,
+                     back=near)['mission_completed']
+    assert not judge(scenario, failure='timeout')['mission_completed']
+
+
+def test_the_report_sets_drawn_and_clean_links_side_by_side(tmp_path):
+    plan = draw_plan(2, seed=1, recovery=True)
+    records = [
+        {'scenario': plan[0], 'link': 'drawn', 'diagnosis_s': 30.0,
+         'verdict': judge(plan[0], (plan[0]['fault'], ''), mission=('true', 'faulty', 'compensate'),
+                          closest=0.05, back=0.05)},
+        {'scenario': on_clean_link(plan[0]), 'link': 'clean', 'diagnosis_s': 20.0,
+         'verdict': judge(plan[0], (plan[0]['fault'], ''), mission=('true', 'faulty', 'compensate'),
+                          closest=0.05, back=0.05)},
+        {'scenario': plan[1], 'link': 'drawn',
+         'verdict': judge(plan[1], ('undiagnosed', 'no diagnosis within the help timeout'))},
+        {'scenario': on_clean_link(plan[1]), 'link': 'clean', 'diagnosis_s': 22.0,
+         'verdict': judge(plan[1], (plan[1]['fault'], ''), mission=('true', 'faulty', 'compensate'),
+                          closest=0.05, back=0.3)},
+    ]
+    text = report(records, 'Test campaign')
+    assert '| drawn (lossy, slow, cut) | 2 | 1 | 1 | 0 | 1 of 2 | 30.0 / 30.0 |' in text
+    assert '| clean | 2 | 2 | 0 | 0 | 1 of 2 | 21.0 / 22.0 |' in text
+    assert '- no diagnosis within the help timeout: runs 2 drawn' in text
+    assert '| 2 | 1002 | %s | clean | correct | %s | no | 22.0 |' % (plan[1]['fault'], plan[1]['fault']) in text
+    save(records, str(tmp_path / 'results.json'))
+    assert json.loads((tmp_path / 'results.json').read_text())[2]['verdict']['outcome'] == 'undiagnosed'
