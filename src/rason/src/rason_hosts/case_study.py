@@ -146,7 +146,7 @@ class CaseStudyOnHosts:
 
     def __init__(self, hosts, folder, fault='both_actuators', recovery=False, loss=0, delay_ms=0,
                  partition=None, partition_after=0.0, rate=0, seed=1, timeout=240.0, echo=None):
-        self.hosts, self.folder = hosts, folder
+        self.hosts, self.folder = hosts, os.path.abspath(folder)   # the launches run elsewhere
         self.fault, self.recovery, self.loss, self.delay_ms = fault, recovery, loss, delay_ms
         self.partition_seconds, self.partition_after = partition, partition_after
         self.rate, self.seed = rate, seed

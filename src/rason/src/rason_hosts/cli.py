@@ -6,6 +6,7 @@ each beside the same run on a clean link (link_campaign)."""
 import argparse
 import os
 import re
+import signal
 import sys
 import tempfile
 import time
@@ -93,6 +94,9 @@ def _campaign(args, argv_seen=None):
         print('campaign: unknown fault(s) %s; known: %s' % (', '.join(unknown), ', '.join(link_campaign.FAULTS)),
               file=sys.stderr)
         return 2
+    # SIGTERM ends the campaign as Ctrl-C does: through the with-blocks that remove each run's hosts
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
+    args.out = os.path.abspath(args.out)
     os.makedirs(args.out, exist_ok=True)
     plan = link_campaign.draw_plan(args.runs, args.seed, faults, args.recovery)
     records = []
