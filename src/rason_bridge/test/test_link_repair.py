@@ -137,3 +137,13 @@ def test_a_lost_subscriber_connection_is_requested_again_and_a_refusal_ends_the_
     finally:
         publisher.server.shutdown()
         publisher.server.server_close()
+
+
+def test_subscriber_connections_probe_a_silent_link_within_seconds():
+    with socket.socket() as sock:
+        repair = LinkRepair(away_after=2.0, clock=Clock())
+        repair.subscribers(Topic('/rason/messages', Connection('http://127.0.0.1:9/', sock)))
+        repair.check()
+        assert sock.getsockopt(socket.SOL_SOCKET, socket.SO_KEEPALIVE) == 1
+        assert sock.getsockopt(socket.IPPROTO_TCP, socket.TCP_KEEPIDLE) == 2
+        assert sock.getsockopt(socket.IPPROTO_TCP, socket.TCP_KEEPCNT) == 10

@@ -31,7 +31,7 @@ class Inbound(object):
 
     def subscribe_fleet(self, settings, peer_heard):
         """The fleet over ROS topics (not with ``fleet_channel: mqtt``, whose channel is Java's);
-        ``peer_heard(node)`` for each pulse and presence of another process. Returns the subscribers."""
+        ``peer_heard(node)`` for each message, pulse and presence of another process. Returns the subscribers."""
         self._peer_heard = peer_heard
         return (rospy.Subscriber(settings.messages_topic, AgentMessage, self._on_message, queue_size=None,
                                  tcp_nodelay=True),
@@ -63,8 +63,11 @@ class Inbound(object):
         self._bridge.actions().event(msg.agent, msg.event_type, msg.parameters, publisher(msg))
 
     def _on_message(self, msg):
-        if msg.sender_mas == self._mas_id or (msg.receiver_mas and msg.receiver_mas != self._mas_id):
-            return  # our own, or for another process: the common case, kept out of Java
+        if msg.sender_mas == self._mas_id:
+            return
+        self._peer_heard(publisher(msg))
+        if msg.receiver_mas and msg.receiver_mas != self._mas_id:
+            return  # for another process: the common case, kept out of Java
         try:
             # checked (authentication, then form) and parsed in Java
             self._channel.deliver(msg.sender_mas, msg.sender, msg.receiver_mas, msg.receiver,

@@ -7,6 +7,7 @@ import socket
 import struct
 import threading
 import time
+import weakref
 import xmlrpc.client
 
 import rospy
@@ -17,6 +18,11 @@ from rason_bridge.repair_rules import TCP_INFO_SIZE, PeerReturns, Relinks, parse
 #: Seconds a request for a lost connection may take (the publisher's XML-RPC server).
 REQUEST_TIMEOUT = 2.0
 _LINGER_RESET = struct.pack('ii', 1, 0)  # close() then sends a reset, not a FIN queued behind the stuck data
+#: Keepalive probes on the fleet subscribers' connections (idle s, s between probes, probes):
+#: a subscriber whose publisher's reset was lost learns it from the reset its next probe gets
+#: (rospy's own: after 60 s); a silent link ends the connection only after 12 s, longer than
+#: the partitions the fleet rides out without making connections again.
+KEEPALIVE = ((socket.TCP_KEEPIDLE, 2), (socket.TCP_KEEPINTVL, 1), (socket.TCP_KEEPCNT, 10))
 
 
 class LinkRepair(object):
@@ -31,6 +37,7 @@ class LinkRepair(object):
         self._relinks = Relinks()
         self._publishers = []
         self._subscribers = []
+        self._probed = weakref.WeakSet()  # subscriber sockets with our keepalive
 
     def publishers(self, *pubs):
         self._publishers.extend(pubs)
@@ -52,9 +59,23 @@ class LinkRepair(object):
             if impl is None:
                 continue
             topic = sub.resolved_name
-            for uri in self._relinks.due(topic, [c.endpoint_id for c in list(impl.connections)], now):
+            connections = list(impl.connections)
+            for conn in connections:
+                self._probe(getattr(conn, 'socket', None))
+            for uri in self._relinks.due(topic, [c.endpoint_id for c in connections], now):
                 self._relinks.started(topic, uri, now)
                 threading.Thread(target=self._relink, args=(topic, uri), name='rason_relink', daemon=True).start()
+
+    def _probe(self, sock):
+        if sock is None or sock in self._probed:
+            return
+        try:
+            sock.setsockopt(socket.SOL_SOCKET, socket.SO_KEEPALIVE, 1)
+            for option, value in KEEPALIVE:
+                sock.setsockopt(socket.IPPROTO_TCP, option, value)
+        except OSError:  # closed meanwhile
+            return
+        self._probed.add(sock)
 
     def _check_publisher_connection(self, topic, conn, now):
         node = getattr(conn, 'endpoint_id', None)
