@@ -113,7 +113,7 @@ def _request_connection(topic, uri):
     proxy = xmlrpc.client.ServerProxy(uri, transport=_TimeoutTransport())
     code, msg, params = proxy.requestTopic(rospy.get_caller_id(), topic, [['TCPROS']])
     if code != 1:
-        rospy.loginfo('%s: %s no longer publishes it (%s)', topic, uri, msg)
+        rospy.logdebug('%s: %s no longer publishes it (%s)', topic, uri, msg)  # it is leaving
         return False
     code, msg, _ = rospy.impl.tcpros.get_tcpros_handler().create_transport(topic, uri, params)
     if code == 1:
