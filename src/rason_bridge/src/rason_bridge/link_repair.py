@@ -26,7 +26,7 @@ KEEPALIVE = ((socket.TCP_KEEPIDLE, 2), (socket.TCP_KEEPINTVL, 1), (socket.TCP_KE
 
 
 class LinkRepair(object):
-    """Call :meth:`heard` for each pulse or presence of a peer and :meth:`check` often.
+    """Call :meth:`heard` for each message, pulse or presence of a peer and :meth:`check` often.
 
     :param away_after: a peer silent this long (s) was away (``presence_timeout``)
     """

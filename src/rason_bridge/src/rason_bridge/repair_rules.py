@@ -30,7 +30,7 @@ def parse_tcp_info(raw):
 
 
 class PeerReturns(object):
-    """When each peer process was last heard after an absence (its pulses and presence).
+    """When each peer process was last heard after an absence (its messages, pulses and presence).
 
     :param away_after: a silence this long (s) is an absence (``presence_timeout``)
     """
@@ -71,7 +71,7 @@ def stuck(info, back_for, grace=GRACE, window=WINDOW):
 
 class Relinks(object):
     """Which lost subscriber connections to make again: every publisher a subscriber was connected
-    to and is not any more, tried again after 0.5 s, 1 s, 2 s... (at most ``longest`` s apart)
+    to and is not any more, tried at once, then 0.5 s, 1 s, 2 s... apart (at most ``longest`` s)
     until linked, or until the publisher refuses (gone, or no longer publishing)."""
 
     FIRST = 0.5
