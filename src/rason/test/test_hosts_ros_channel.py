@@ -8,15 +8,16 @@ message every 0.3 s (tell, achieve, askOne in turn), each from an intention of i
 waits for the delivery receipt. Each robot's link loses frames in each direction. One run
 (the module fixture, 60-90 s) plays two phases:
 
-  (loss) 10 % loss for LOSS_SECONDS: every send ends, every message arrives exactly once, in
-         order, except one refused before it was published (receiver_not_found, while the peer
-         was dropped); a send may fail receiver_departed although its message arrived (a drop
-         while its receipt was on its way); present/1 is never lost (pulses);
+  (loss) 10 % loss for LOSS_SECONDS: every send ends, every message arrives at most once, in
+         order, and one that does not arrived had its send fail: refused before it was published
+         (receiver_not_found, while the peer was dropped), or still on a connection stalled into
+         the cut, which is reset after the heal; a send may fail receiver_departed or undelivered
+         although its message arrived (a receipt still on its way); present/1 is never lost (pulses);
   (cut)  no loss (as in the MQTT acceptance; RASON_ROS_CUT_LOSS=10 to measure with loss), r2
          cut off for 5 s: every send since the end of (loss) is received or failed with a
          documented reason, never silently lost, and every agent gets a message of its peer
-         sent after the heal within 45 s; within 5 s (the goal) is asserted only with
-         RASON_ASSERT_ROS_RESUME=1, since TCP's backoff still delays one direction now and then.
+         sent after the heal within 5 s (a publisher resets a connection stuck in TCP's
+         backoff once it hears its peer again, and the subscriber makes a new one).
 
 There is no delay here: the delay relay of rason_hosts relays one TCP port, and ROS opens a
 connection per topic, publisher and subscriber on ports it picks. The agents' output is read
@@ -43,7 +44,7 @@ CUT_LOSS = int(os.environ.get('RASON_ROS_CUT_LOSS', '0'))   # % during and after
 LOSS_SECONDS = float(os.environ.get('RASON_ROS_LOSS_SECONDS', '40'))
 PARTITION_SECONDS = 5.0
 RESUME_LIMIT = 5.0        # s from the heal to the first message sent after it arriving (the goal)
-RESUME_WAIT = 45.0        # s the run waits for that (asserted; TCP backoff delayed it 18.5 s)
+RESUME_WAIT = 45.0        # s the run waits for that (the report says how long it took)
 MESSAGE_TTL = 15
 IN_FLIGHT = 3.0           # sends this long before a phase's end may still be on their way
 ROBOTS = {'r1': ['a1', 'a2'], 'r2': ['b1', 'b2']}
@@ -159,7 +160,7 @@ def _stats(seen, keys):
     return 'sent %d, received %d, failed %s' % (len(keys), received, failed or 0)
 
 
-def test_10_percent_loss_never_drops_presence_nor_a_message(ros_run):
+def test_10_percent_loss_never_drops_presence_nor_a_message_silently(ros_run):
     seen, marks = ros_run.seen, ros_run.marks
     assert marks['loss_end'] - marks['loss_start'] >= LOSS_SECONDS - 0.5, 'a robot ended during the loss'
     drops = [p for p in seen.presence if not p[2] and marks['met'] <= p[3] <= marks['cut']]
@@ -167,11 +168,16 @@ def test_10_percent_loss_never_drops_presence_nor_a_message(ros_run):
     print('\n(loss) %.1f s at %d %% loss: %s; presence drops %d' % (
         marks['loss_end'] - marks['loss_start'], LOSS, _stats(seen, sent), len(drops)))
     # A presence drop (under this loss, or the cut's own for receipts still on their way) fails
-    # what waits for the peer's receipts (receiver_departed), though those messages arrive; only
-    # a send refused before it was published (receiver_not_found) may be missing.
+    # what waits for the peer's receipts (receiver_departed), and a receipt later than
+    # message_ttl fails its send (undelivered), though those messages arrive. A message may be
+    # missing only if its send failed: refused before it was published (receiver_not_found), or
+    # still unacknowledged on a connection stalled into the cut, which the repair resets after
+    # the heal (docs/guides/fleet-channel.md, the ROS channel across hosts).
     problems = _problems(seen, sent, must_deliver=False)
-    problems += ['%s -> %s #%d received %d times' % (k[0], PEER[k[0]], k[1], seen.got_count[k]) for k in sorted(sent)
-                 if seen.got_count[k] != 1 and 'receiver_not_found' not in seen.failures(k)]
+    problems += ['%s -> %s #%d never received and never failed' % (k[0], PEER[k[0]], k[1]) for k in sorted(sent)
+                 if seen.got_count[k] == 0 and not seen.failures(k)]
+    missing = [k for k in sent if seen.got_count[k] == 0 and 'receiver_not_found' not in seen.failures(k)]
+    print('(loss) failed and never received (reset after the heal): %d' % len(missing))
     assert not problems, '\n'.join(problems[:40])
     assert not drops, 'present/1 dropped: %s' % [
         '%s lost %s at +%.2f s' % (a, peer, t - marks['loss_start']) for a, peer, _, t in drops]
@@ -198,14 +204,8 @@ def test_messages_flow_again_within_5_s_of_the_heal_and_none_is_lost_silently(ro
     assert not problems, '\n'.join(problems[:40])
     never = sorted(a for a, r in resumed.items() if r is None or r > RESUME_WAIT)
     assert not never, 'no message of %s sent after the heal arrived within %g s' % (never, RESUME_WAIT)
-    # Not met on the ROS channel (docs/guides/fleet-channel.md, the ROS channel across hosts): a
-    # connection still in TCP's retransmission backoff after the heal resumes at its next
-    # retransmission, up to ~15 s later.
     late = {a: round(r, 2) for a, r in resumed.items() if r > RESUME_LIMIT}
-    if os.environ.get('RASON_ASSERT_ROS_RESUME') == '1':
-        assert not late, 'messages did not flow again within %g s of the heal: %s' % (RESUME_LIMIT, late)
-    elif late:
-        print('(cut) NOT MET: messages flowed again more than %g s after the heal: %s' % (RESUME_LIMIT, late))
+    assert not late, 'messages did not flow again within %g s of the heal: %s' % (RESUME_LIMIT, late)
 
 
 def _fmt(values):

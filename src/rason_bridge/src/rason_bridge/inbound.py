@@ -23,16 +23,21 @@ class Inbound(object):
         self._perceptions = perceptions
         self._now_ns = now_ns
         self.events = None  # the jason/event subscriber, once subscribed
+        self._peer_heard = lambda node: None
 
     def subscribe(self):
         self.events = rospy.Subscriber('jason/event', Event, self._on_event, queue_size=None, tcp_nodelay=True)
         rospy.Subscriber('jason/perception', Perception, self._on_perception, queue_size=100, tcp_nodelay=True)
 
-    def subscribe_fleet(self, settings):
-        """The fleet over ROS topics (not with ``fleet_channel: mqtt``, whose channel is Java's)."""
-        rospy.Subscriber(settings.messages_topic, AgentMessage, self._on_message, queue_size=None, tcp_nodelay=True)
-        rospy.Subscriber(settings.presence_topic, Presence, self._on_presence, queue_size=100, tcp_nodelay=True)
-        rospy.Subscriber(settings.pulse_topic, Pulse, self._on_pulse, queue_size=100, tcp_nodelay=True)
+    def subscribe_fleet(self, settings, peer_heard):
+        """The fleet over ROS topics (not with ``fleet_channel: mqtt``, whose channel is Java's);
+        ``peer_heard(node)`` for each message, pulse and presence of another process. Returns the subscribers."""
+        self._peer_heard = peer_heard
+        return (rospy.Subscriber(settings.messages_topic, AgentMessage, self._on_message, queue_size=None,
+                                 tcp_nodelay=True),
+                rospy.Subscriber(settings.presence_topic, Presence, self._on_presence, queue_size=100,
+                                 tcp_nodelay=True),
+                rospy.Subscriber(settings.pulse_topic, Pulse, self._on_pulse, queue_size=100, tcp_nodelay=True))
 
     def follow_clock(self, java_error):
         """Under /use_sim_time, Jason's .wait, .at, deadlines and .send timeouts follow /clock
@@ -58,8 +63,11 @@ class Inbound(object):
         self._bridge.actions().event(msg.agent, msg.event_type, msg.parameters, publisher(msg))
 
     def _on_message(self, msg):
-        if msg.sender_mas == self._mas_id or (msg.receiver_mas and msg.receiver_mas != self._mas_id):
-            return  # our own, or for another process: the common case, kept out of Java
+        if msg.sender_mas == self._mas_id:
+            return
+        self._peer_heard(publisher(msg))
+        if msg.receiver_mas and msg.receiver_mas != self._mas_id:
+            return  # for another process: the common case, kept out of Java
         try:
             # checked (authentication, then form) and parsed in Java
             self._channel.deliver(msg.sender_mas, msg.sender, msg.receiver_mas, msg.receiver,
@@ -72,6 +80,7 @@ class Inbound(object):
     def _on_presence(self, msg):
         if msg.mas_id == self._mas_id:
             return
+        self._peer_heard(publisher(msg))
         if msg.incarnation >= 2 ** 63:
             rospy.logwarn_throttle(10, 'ignored presence of %r: incarnation %d out of range',
                                    msg.mas_id, msg.incarnation)
@@ -86,6 +95,7 @@ class Inbound(object):
     def _on_pulse(self, msg):
         if msg.mas_id == self._mas_id:
             return
+        self._peer_heard(publisher(msg))
         try:
             self._channel.pulseArrived(msg.mas_id, to_int64(msg.incarnation), to_int64(msg.sequence),
                                        to_int64(msg.stamp), msg.key_id, msg.mac, publisher(msg))

@@ -136,7 +136,7 @@ class RasonMasNode(object):
         self._actions.refresh_listed()
         self._perceptions.start()
         if self._fleet:
-            self._inbound.subscribe_fleet(self.settings)
+            self._fleet.repair_links(self._inbound.subscribe_fleet(self.settings, self._fleet.peer_heard))
         self._inbound.subscribe()
         # feedback from a decomposer not connected yet would be lost: let the running ones connect first
         self._graph.wait_for_publishers(self._inbound.events, self.settings.connect_wait)

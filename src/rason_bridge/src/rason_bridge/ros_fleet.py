@@ -8,6 +8,7 @@ import rospy
 from rason_msgs.msg import AgentMessage, Presence, Pulse
 
 from rason_bridge import ros_links, signed
+from rason_bridge.link_repair import LinkRepair
 from rason_bridge.link_tuning import LinkTuner
 from rason_bridge.message_sender import HELD, MessageSender
 
@@ -33,14 +34,25 @@ class RosFleet(object):
         self._links.watch(self._message_pub)
         self._links.watch(self._presence_pub)
         self._links.watch(self._pulse_pub)
+        self._repair = LinkRepair(s.presence_timeout)
+        self._repair.publishers(self._message_pub, self._presence_pub, self._pulse_pub)
         _cache_rosout_setting()
         # signed when published, in publishing order, so the sequence numbers arrive increasing
         self.messages = MessageSender(publish=self._sign_and_publish,
                                       linked=lambda mas: ros_links.linked(self._message_pub, mas),
                                       connect_wait=s.connect_wait)
 
+    def repair_links(self, subscribers):
+        """Make the fleet subscribers' connections again when they end (rospy does not)."""
+        self._repair.subscribers(*subscribers)
+
+    def peer_heard(self, node):
+        """A pulse or presence of node arrived (the link to it works)."""
+        self._repair.heard(node)
+
     def presence_tick(self):
         self._links.tune()
+        self._repair.check()
         self._channel.presenceTick(ros_links.linked_processes(self._message_pub))
 
     def publish_presence(self, leaving):
