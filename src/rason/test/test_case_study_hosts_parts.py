@@ -50,6 +50,19 @@ def test_the_mission_is_judged_from_the_start_pose_one_metre_ahead():
     assert closest == pytest.approx(0.5)
 
 
+def test_a_delegated_mission_is_judged_by_the_robot_that_completed_it():
+    start = (0.0, -1.0, -0.75, -math.pi / 2)
+    helper_at_goal = (5.0, -0.98, -1.75, 0.0)
+    poses = {'faulty': [start, (9.0, -1.0, -0.75, -math.pi / 2)],
+             'helper': [(0.0, -1.0, 0.75, 0.0), helper_at_goal]}
+    closest, back = judge_mission(poses, ['helper'])
+    assert closest == pytest.approx(0.02) and back is None
+    closest, back = judge_mission(poses, ['faulty'])
+    assert closest == pytest.approx(1.0) and back == pytest.approx(0.0)
+    assert judge_mission(poses, ['helper', 'faulty'])[0] == pytest.approx(0.02)
+    assert judge_mission({'helper': poses['helper']}, ['helper']) == (None, None)   # no start: no goal
+
+
 def test_the_transcript_waits_for_a_line_and_says_what_it_missed():
     echoed = []
     transcript = Transcript(echo=lambda source, text: echoed.append((source, text)))

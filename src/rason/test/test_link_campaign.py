@@ -54,6 +54,9 @@ def test_a_mission_is_completed_only_when_reported_and_seen_by_the_true_poses():
     assert not judge(scenario, ('left_actuator', ''), mission=('false', '', 'delegate'), closest=near,
                      back=near)['mission_completed']
     assert not judge(scenario, failure='timeout')['mission_completed']
+    delegated = ('true', 'helper', 'delegate')
+    assert judge(scenario, ('both_actuators', ''), mission=delegated, closest=near, back=None)['mission_completed']
+    assert not judge(scenario, ('both_actuators', ''), mission=delegated, closest=None, back=None)['mission_completed']
 
 
 def test_the_report_sets_drawn_and_clean_links_side_by_side(tmp_path):

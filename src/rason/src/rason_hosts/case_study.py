@@ -4,7 +4,7 @@ the world by the sim link's Unix sockets and to each other only by MQTT over sha
 
 CaseStudyOnHosts(hosts, folder, ...).play() starts everything, waits for the diagnosis (and,
 with recovery, the mission's end), optionally cuts Helper's link for a while once its search
-has begun, and returns an Outcome: what Faulty diagnosed, the mission, Faulty's true poses
+has begun, and returns an Outcome: what Faulty diagnosed, the mission, both robots' true poses
 (read on the world's master) and every line the processes printed, stamped with the wall
 clock. No rospy: the ROS side is roslaunch and rostopic inside the hosts.
 """
@@ -112,28 +112,41 @@ def true_poses(csv_lines):
     return poses
 
 
-def judge_mission(poses):
-    """How Faulty's own mission went by its true poses: (closest to the goal, distance from
-    its start at the end), the goal MISSION_LENGTH ahead of its first pose."""
-    if not poses:
+def judge_mission(poses, completed_by=None):
+    """How Faulty's own mission went by the true poses: (closest to the goal of a robot that
+    completed it, Faulty's distance from its start at the end), the goal MISSION_LENGTH ahead
+    of Faulty's first pose. poses: {robot: [(wall, x, y, yaw)]}, or Faulty's list alone;
+    completed_by: the robots the mission's line names (default Faulty). A mission delegated to
+    another robot brings Faulty back to nothing: the second value is then None."""
+    if not isinstance(poses, dict):
+        poses = {'faulty': poses}
+    by = completed_by or ['faulty']
+    own = poses.get('faulty') or []
+    if not own:
         return None, None
-    _, x0, y0, yaw0 = poses[0]
+    _, x0, y0, yaw0 = own[0]
     gx, gy = x0 + MISSION_LENGTH * math.cos(yaw0), y0 + MISSION_LENGTH * math.sin(yaw0)
-    closest = min(math.hypot(x - gx, y - gy) for _, x, y, _ in poses)
-    back = math.hypot(poses[-1][1] - x0, poses[-1][2] - y0)
+    distances = [math.hypot(x - gx, y - gy) for robot in by for _, x, y, _ in poses.get(robot) or []]
+    closest = min(distances) if distances else None
+    back = math.hypot(own[-1][1] - x0, own[-1][2] - y0) if 'faulty' in by else None
     return closest, back
 
 
 class Outcome:
     """What one run on hosts gave: the diagnosis (component, evidence), the mission (completed,
-    by, recovery) or None, Faulty's true poses, the transcript and the phases' wall times."""
+    by, recovery) or None, Faulty's and Helper's true poses, the transcript and the phases' wall
+    times."""
 
-    def __init__(self, diagnosis, mission, poses, transcript, marks):
+    def __init__(self, diagnosis, mission, poses, transcript, marks, helper_poses=None):
         self.diagnosis, self.mission, self.poses = diagnosis, mission, poses
+        self.helper_poses = helper_poses or []
         self.transcript, self.marks = transcript, marks
 
     def mission_judged(self):
-        return judge_mission(self.poses)
+        """(closest to the goal, Faulty back at its start or None): judge_mission of the robots
+        the mission's line says completed it."""
+        by = [r.strip() for r in self.mission[1].split(',') if r.strip()] if self.mission else None
+        return judge_mission({'faulty': self.poses, 'helper': self.helper_poses}, by)
 
 
 class CaseStudyOnHosts:
@@ -179,7 +192,8 @@ class CaseStudyOnHosts:
             poses = self.hosts.run('world', ['rostopic', 'echo', '-p', '/%s/true_pose' % robot],
                                    env=self._envs['world'], stdout=subprocess.PIPE,
                                    stderr=subprocess.STDOUT)
-            self.transcript.follow('pose/' + robot, poses)
+            self.transcript.follow('pose/' + robot, poses,
+                                   os.path.join(self.folder, 'world', 'true_pose_%s.csv' % robot))
         for robot in ROBOTS:
             self.hosts.shape(robot, loss=self.loss)
             args = ['robot_host.launch', 'robot:=%s' % robot, 'mqtt_url:=%s' % url,
@@ -209,7 +223,8 @@ class CaseStudyOnHosts:
         if cut is not None:
             cut.join(self.partition_seconds + 10)
         self.marks['end'] = time.time()
-        return Outcome(diagnosis, mission, self.true_poses('faulty'), self.transcript, self.marks)
+        return Outcome(diagnosis, mission, self.true_poses('faulty'), self.transcript, self.marks,
+                       self.true_poses('helper'))
 
     def true_poses(self, robot):
         """[(wall, x, y, yaw)] of robot's true poses so far (read on the world's master)."""

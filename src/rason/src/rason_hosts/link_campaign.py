@@ -48,8 +48,9 @@ def on_clean_link(scenario):
 def judge(scenario, diagnosis=None, failure=None, mission=None, closest=None, back=None):
     """A run's verdict: 'correct' (the injected fault diagnosed), 'wrong' (another component),
     or 'undiagnosed' (Faulty concluded undiagnosed, with its reason, or the run failed:
-    failure says why). With the mission: completed when Faulty reports it and its true poses
-    came within MISSION_TOLERANCE of the goal and back to its start."""
+    failure says why). With the mission: completed when Faulty reports it and the true poses of
+    the robot(s) that completed it came within MISSION_TOLERANCE of the goal (closest) and,
+    when Faulty completed it itself, Faulty's back to its start (back; None when delegated)."""
     verdict = {'outcome': 'undiagnosed', 'component': None, 'reason': failure}
     if diagnosis is not None:
         component, evidence = diagnosis
@@ -60,8 +61,8 @@ def judge(scenario, diagnosis=None, failure=None, mission=None, closest=None, ba
             verdict['outcome'] = 'correct' if component == scenario['fault'] else 'wrong'
     if scenario.get('recovery'):
         verdict['mission_completed'] = bool(
-            mission and mission[0] == 'true' and closest is not None and back is not None
-            and closest <= MISSION_TOLERANCE and back <= MISSION_TOLERANCE)
+            mission and mission[0] == 'true' and closest is not None and closest <= MISSION_TOLERANCE
+            and (back is None or back <= MISSION_TOLERANCE))
         verdict['closest'], verdict['back'] = closest, back
     return verdict
 
@@ -104,8 +105,8 @@ def report(records, title, how=''):
     clean = [r for r in records if r['link'] == 'clean']
     header = ['link', 'runs', 'correct', 'undiagnosed', 'wrong', 'missions completed',
               'time to diagnosis (correct runs) median / max, s']
-    out = ['# ' + title, ''] + ([how, ''] if how else []) + [_table(header, [_summary_row('drawn (lossy, slow, cut)', drawn),
-                                             _summary_row('clean', clean)]), '']
+    summary = _table(header, [_summary_row('drawn (lossy, slow, cut)', drawn), _summary_row('clean', clean)])
+    out = ['# ' + title, ''] + ([how, ''] if how else []) + [summary, '']
     reasons = {}
     for r in records:
         if r['verdict']['outcome'] == 'undiagnosed':
