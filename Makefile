@@ -57,7 +57,10 @@ apt:
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing; \
 	else echo "apt: all packages present"; fi
 
+# The jar, then the class-data sharing archive of rason_mas's JVM (remade only when the jars
+# or Java changed; see docs/guides/robot-budget.md).
 jason_lib: $(JAR)
+	@PYTHONPATH=$(CURDIR)/src/rason_bridge/src $(PY) -m rason_bridge.cds_build $(CURDIR)
 $(JAR): jason_lib/pom.xml $(JAVA_SOURCES)
 	cd jason_lib && mvn -q -B package -DskipTests
 	@touch $@

@@ -5,7 +5,7 @@ from rason_bench import main
 
 
 def test_every_part_runs_by_default_and_preemption_can_run_alone():
-    assert set(main.PARTS) == {'cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'hostile', 'fleet',
+    assert set(main.PARTS) == {'startup', 'cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'hostile', 'fleet',
                                'behaviour', 'budget'}
     # behaviour starts the simulator on the bench's master and sets /use_sim_time; budget's
     # case-study runs have masters of their own

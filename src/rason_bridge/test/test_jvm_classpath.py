@@ -2,6 +2,7 @@
 extra options are appended."""
 import os
 
+from rason_bridge import jvm
 from rason_bridge.jvm import JVM_OPTIONS, jason_lib_classpath, jvm_options
 
 
@@ -31,3 +32,8 @@ def test_jvm_options_keep_signals_for_rospy_and_take_extra_ones_last(monkeypatch
     assert jvm_options()[-2:] == ['-Xmx512m', '-XX:G1PeriodicGCInterval=0']
     monkeypatch.delenv('RASON_JVM_OPTIONS')
     assert jvm_options() == list(JVM_OPTIONS)
+
+
+def test_the_archive_is_dumped_with_the_collector_options_of_rason_mas():
+    assert jvm.gc_options() == [o for o in JVM_OPTIONS if o.startswith('-XX:')]
+    assert '-Xrs' not in jvm.gc_options()

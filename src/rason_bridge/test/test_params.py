@@ -63,9 +63,11 @@ def test_the_node_reads_its_private_parameters_only_through_the_schema():
             if calls_schema:
                 through_schema.append(module)
     assert read_by_name == {'inbound.py': ['/use_sim_time']}  # a global parameter, not the node's
-    assert through_schema == ['mas_node.py']
+    assert through_schema == ['cds_build.py', 'mas_node.py']
     with open(os.path.join(MODULES, 'mas_node.py')) as f:
         assert "read_settings(lambda name, default: rospy.get_param('~' + name, default)" in f.read()
+    with open(os.path.join(MODULES, 'cds_build.py')) as f:  # the build's warm-up: the defaults, no parameter
+        assert 'read_settings(lambda name, default: default,' in f.read()
 
 
 def test_every_default_is_allowed_and_typed():

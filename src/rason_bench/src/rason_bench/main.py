@@ -2,8 +2,8 @@
 their own and writes ``report.md``, ``results.json`` and PNG plots.
 
 Options: ``--seconds`` (length of one measured run, default 1), ``--quick`` (a subset of
-cells, fewer samples, for a smoke run), ``--only`` (cycle, latency, cpu, reaction, scale,
-preemption, hostile, fleet, behaviour, budget; repeatable), ``--take-backs`` (rounds of the preemption part), ``--out``
+cells, fewer samples, for a smoke run), ``--only`` (startup, cycle, latency, cpu, reaction,
+scale, preemption, hostile, fleet, behaviour, budget; repeatable), ``--take-backs`` (rounds of the preemption part), ``--out``
 (directory).
 """
 import argparse
@@ -18,7 +18,10 @@ import time
 from rason_bench import plots, report, thesis
 
 #: The parts of a run, in the order they run (behaviour and budget last: they start the simulator).
-PARTS = ('cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'hostile', 'fleet', 'behaviour', 'budget')
+PARTS = ('startup', 'cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'hostile', 'fleet', 'behaviour',
+         'budget')
+#: Starts of a one-agent rason_mas the startup part times (normal, --quick).
+STARTS, STARTS_QUICK = 5, 3
 TAKE_BACKS, TAKE_BACKS_QUICK = 200, 50
 #: motion_decomp's ~rate in the preemption part: the 50 Hz control period of the goal.
 CONTROL_RATE_HZ = 50.0
@@ -79,6 +82,7 @@ def main(argv=None):
                           'busy_intentions': report.BUSY_INTENTIONS, 'wakeups': wakeups, 'wakeup_gap_s': 2.0,
                           'sim_window_s': sim_window, 'rate_limit_seconds': 3.0, 'rate_limit_sent_hz': 50.0,
                           'take_backs': take_backs, 'control_rate_hz': CONTROL_RATE_HZ,
+                          'starts': STARTS_QUICK if args.quick else STARTS,
                           'flood_seconds': FLOOD_SECONDS_QUICK if args.quick else FLOOD_SECONDS,
                           'flood_rate_hz': FLOOD_RATE_HZ, 'flood_literals': FLOOD_LITERALS,
                           'flood_after_s': FLOOD_AFTER_S, 'parts': parts,
@@ -98,7 +102,7 @@ def main(argv=None):
     failed = []
     try:
         import rospy
-        from rason_bench import behaviour, experiments, fleet, hostile, robot_budget
+        from rason_bench import behaviour, experiments, fleet, hostile, robot_budget, startup
         from rason_bench.harness import Harness
         rospy.init_node('rason_bench', disable_signals=True)
         harness = Harness()
@@ -108,6 +112,8 @@ def main(argv=None):
             iterations = results['cycle']['per_source']['iterations'] if 'per_source' in results.get('cycle', {}) else 20000
             return experiments.scale(procs, harness, (1, 10, 100), args.seconds, iterations, log)
         steps = {
+            'startup': [('startup', 'start-up: a one-agent rason_mas to its first reasoning cycle',
+                         lambda: startup.measure(procs, harness, p['starts'], log))],
             'cycle': [('cycle', None, lambda: experiments.cycle_tables(
                 procs, harness, ('accumulate', 'per_source'), perceptions, rates, args.seconds, log))],
             'latency': [('latency', 'latencies', lambda: experiments.latencies(procs, harness, pings, stamps, 0.02, log))],

@@ -34,12 +34,15 @@ Ticked = namedtuple('Ticked', 'run agent seq ms')
 Marked = namedtuple('Marked', 'run mark stamp_ms')
 #: Publish of a flood mark -> the agent's action for it arriving, in ms (made by the harness).
 MarkSeen = namedtuple('MarkSeen', 'run mark ms')
+#: ``started(Run, Ms)``: the agent's first reasoning cycle ran at Ms (``rason.time_ms``;
+#: agents/startup.asl).
+Started = namedtuple('Started', 'run ms')
 
 _REPORTS = {'cycle': (Cycle, (int, int, float)), 'rtt': (RoundTrip, (int, int, float)),
             'seen': (Seen, (int, int, float)), 'react': (Reacted, (int, int, float)),
             'spinning': (Spinning, (int, int)), 'spun': (Spun, (int, int, int)),
             'ticked': (Ticked, (int, str, int, float)), 'took_back': (TookBack, (int, int, float)),
-            'marked': (Marked, (int, int, float))}
+            'marked': (Marked, (int, int, float)), 'started': (Started, (int, float))}
 
 #: Source of the harness's control percepts.
 CONTROL_SOURCE = 'bench_control'
@@ -97,6 +100,11 @@ def go_cycle(agent, run, iterations):
 def go_ping(agent, run, count):
     """Control percept: ``agent`` acts ``ping`` ``count`` times, reporting each round trip."""
     return 'go_ping(%s,%d,%d)' % (agent, run, count)
+
+
+def go_started(agent, run):
+    """Control percept: ``agent`` reports when its first reasoning cycle ran (``started``)."""
+    return 'go_started(%s,%d)' % (agent, run)
 
 
 def go_spin(agent, run, count):

@@ -1,5 +1,5 @@
 """Turning measurements into verdicts and Markdown (pure: dicts in, text out)."""
-from rason_bench import budget_report, fleet_report, stats, thesis
+from rason_bench import budget_report, fleet_report, startup_report, stats, thesis
 
 #: The issue's goals.
 CYCLE_RATIO_GOAL = 1.2
@@ -57,7 +57,7 @@ def cell(mode_result, perceptions, rate_hz):
 
 def goals(results):
     """[(goal, measured text, met)] for the goals whose measurements are in results."""
-    out = []
+    out = startup_report.goals(results.get('startup', {}))
     per_source = results.get('cycle', {}).get('per_source')
     if per_source:
         c = cell(per_source, 10, 50)
@@ -428,6 +428,9 @@ def markdown(results):
             % (m['date'], m['cpus'], m['cpu_model'], ' / '.join('%.2f' % x for x in m['load_at_start']),
                '; the simulator campaign was running' if m.get('simulator_running') else '', cells)).rstrip(), '',
            '## Goals', '', goals_table(results)]
+    if 'startup' in results:
+        out += ['## Start-up: a one-agent rason_mas to its first reasoning cycle', '',
+                startup_report.text(results['startup'])]
     cycle = results.get('cycle', {})
     titles = {'accumulate': 'Without filtering (`perception_manager=accumulate`; thesis Table 5.1)',
               'per_source': 'Per-source replacement (`perception_manager=per_source`, the default; thesis Table 5.2)'}

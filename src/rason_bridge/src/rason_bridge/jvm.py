@@ -4,6 +4,8 @@ import os
 
 import jpype
 
+from rason_bridge import cds
+
 #: Debian's python3-jpype needs its support jar on the class path.
 JPYPE_SUPPORT_JAR = '/usr/share/java/org.jpype.jar'
 
@@ -53,18 +55,39 @@ def jvm_options():
     return list(JVM_OPTIONS) + os.environ.get('RASON_JVM_OPTIONS', '').split()
 
 
-def start_jvm(classpath=None):
+def gc_options():
+    """The options of :data:`JVM_OPTIONS` that choose and tune the collector (the class-data
+    sharing archive is dumped with them)."""
+    return [o for o in JVM_OPTIONS if o.startswith('-XX:')]
+
+
+#: What :func:`start_jvm` decided about class-data sharing (one line for the node's log).
+cds_decision = 'class-data sharing: the JVM has not been started here'
+
+
+def start_jvm(classpath=None, cds_archive=None):
     """Start the JVM if this process has none yet; returns the class path in use.
 
-    ``-Xrs`` leaves SIGINT/SIGTERM to rospy, so Ctrl-C stops the node cleanly. Jason's
+    ``-Xrs`` leaves SIGINT/SIGTERM to rospy, so Ctrl-C stops the node cleanly. The class-data
+    sharing archive made by ``make jason_lib`` (``cds_archive``: another one; ``False``: none) is
+    mapped when it fits the class path and this JVM (:func:`rason_bridge.cds.decide`); a later
+    ``RASON_JVM_OPTIONS`` ``-XX:SharedArchiveFile`` or ``-Xshare:off`` still wins. Jason's
     configuration is then completed as Jason's runner completes it (``RasonConfig.install``).
     """
+    global cds_decision
     if jpype.isJVMStarted():
         return None
     cp = list(classpath or jason_lib_classpath())
     if os.path.isfile(JPYPE_SUPPORT_JAR):
         cp.append(JPYPE_SUPPORT_JAR)
-    jpype.startJVM(*jvm_options(), classpath=cp, convertStrings=False, interrupt=False)
+    option, cds_decision = None, 'class-data sharing: not asked for'
+    if cds_archive is not False:
+        option, cds_decision = cds.decide(cds_archive or cds.archive_path(_WORKSPACE_ROOT), cp,
+                                          jpype.getDefaultJVMPath())
+    jpype.startJVM(*([option] if option else []) + jvm_options(), classpath=cp, convertStrings=False,
+                   interrupt=False)
+    if option and 'sharing' not in str(jpype.JClass('java.lang.System').getProperty('java.vm.info')):
+        cds_decision = 'class-data sharing: off, the JVM did not map %s' % option.partition('=')[2]
     # Jason's configuration as Jason's runner makes it, before any Jason term: Jason reads some
     # of its settings (shortUnnamedVars) once, when its term classes are first used
     jpype.JClass('rason.infra.RasonConfig').install()

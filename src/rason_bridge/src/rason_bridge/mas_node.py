@@ -20,7 +20,7 @@ import rospy
 from rospy.impl.rosout import RosOutHandler
 from rason_msgs.msg import Action, Event, MindState
 
-from rason_bridge import java_config, ros_links
+from rason_bridge import java_config, jvm, ros_links
 from rason_bridge.action_sender import DEFERRED, NO_DECOMPOSER, ActionSender
 from rason_bridge.coalesce import PerceptionCoalescer
 from rason_bridge.exits import exit_for_shutdown
@@ -250,6 +250,7 @@ def main(argv=None):
         settings = read_settings(lambda name, default: rospy.get_param('~' + name, default), rospkg.get_ros_home())
         classes = project_classpath(mas2j, settings.classpath)
         start_jvm(jason_lib_classpath() + classes)  # with the project's classes: Jason loads them from its class path
+        rospy.loginfo(jvm.cds_decision)
         node = RasonMasNode(settings)
     except ParamError as e:
         rospy.logfatal('bad parameter: %s', e)
