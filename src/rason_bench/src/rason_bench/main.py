@@ -3,7 +3,7 @@ their own and writes ``report.md``, ``results.json`` and PNG plots.
 
 Options: ``--seconds`` (length of one measured run, default 1), ``--quick`` (a subset of
 cells, fewer samples, for a smoke run), ``--only`` (cycle, latency, cpu, reaction, scale,
-preemption, hostile, fleet, behaviour, budget; repeatable), ``--take-backs`` (rounds of the preemption part), ``--out``
+preemption, hostile, fleet, behaviour, budget, fleet_sim; repeatable), ``--take-backs`` (rounds of the preemption part), ``--out``
 (directory).
 """
 import argparse
@@ -17,8 +17,9 @@ import time
 
 from rason_bench import plots, report, thesis
 
-#: The parts of a run, in the order they run (behaviour and budget last: they start the simulator).
-PARTS = ('cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'hostile', 'fleet', 'behaviour', 'budget')
+#: The parts of a run, in the order they run (behaviour, budget and fleet_sim last: they start the simulator).
+PARTS = ('cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'hostile', 'fleet', 'behaviour', 'budget',
+         'fleet_sim')
 TAKE_BACKS, TAKE_BACKS_QUICK = 200, 50
 #: motion_decomp's ~rate in the preemption part: the 50 Hz control period of the goal.
 CONTROL_RATE_HZ = 50.0
@@ -98,7 +99,7 @@ def main(argv=None):
     failed = []
     try:
         import rospy
-        from rason_bench import behaviour, experiments, fleet, hostile, robot_budget
+        from rason_bench import behaviour, experiments, fleet, fleet_sim, hostile, robot_budget
         from rason_bench.harness import Harness
         rospy.init_node('rason_bench', disable_signals=True)
         harness = Harness()
@@ -133,7 +134,10 @@ def main(argv=None):
                 ('behaviour.sim', 'behaviour: simulator rates (two_robots.launch)', lambda: behaviour.sim_rates(
                     procs, sim_window, log))],
             'budget': [('budget', 'robot budget: the case study, each robot in a CPU cgroup (rate 1)',
-                        lambda: robot_budget.measure(args.quick, log))]}
+                        lambda: robot_budget.measure(args.quick, log))],
+            'fleet_sim': [('fleet_sim', 'the simulator with a fleet: N = %s robots, lockstep on (rate 0)'
+                           % ', '.join(str(n) for n in fleet_sim.SIZES),
+                           lambda: fleet_sim.measure(procs, args.quick, log))]}
         for part in parts:
             for key, title, measure in steps[part]:
                 if title:
