@@ -28,12 +28,16 @@ def test_the_table_has_a_row_per_size_and_names_turns_that_ended():
     assert 'r4 with 4 robots: no_progress' in text
 
 
-def test_cpu_is_the_ticks_used_in_the_window_over_its_length():
+def test_cpu_is_the_ticks_used_in_the_window_over_its_length_by_command():
     hz = os.sysconf('SC_CLK_TCK')
     before = {10: ('rason_sim_node', 0), 11: ('python3', hz)}
     after = {10: ('rason_sim_node', hz), 11: ('python3', 2 * hz), 12: ('python3', hz)}  # 12 started since
-    sim, total = fleet_sim.cpu_percent(before, after, 2.0)
-    assert (sim, total) == (50.0, 150.0)
+    assert fleet_sim.cpu_percent(before, after, 2.0) == {'rason_sim_node': 50.0, 'python3': 100.0}
+
+
+def test_the_process_tree_is_the_launch_and_what_it_started():
+    tree = fleet_sim._ticks_by_pid(os.getpid())
+    assert os.getpid() in tree and os.getppid() not in tree
 
 
 def test_the_fleets_are_the_first_robots_of_the_world():

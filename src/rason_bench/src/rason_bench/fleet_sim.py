@@ -25,9 +25,10 @@ def robots_of(n):
     return ['r%d' % k for k in range(1, n + 1)]
 
 
-def _ticks_by_pid(session):
-    """{pid: (command name, utime + stime in clock ticks)} of the processes of a session."""
-    out = {}
+def _ticks_by_pid(root):
+    """{pid: (command name, utime + stime in clock ticks)} of root and every process under it
+    (roslaunch puts each node in a session of its own, so it is the parent links that count)."""
+    stats = {}
     for entry in os.listdir('/proc'):
         if not entry.isdigit():
             continue
@@ -36,10 +37,16 @@ def _ticks_by_pid(session):
                 text = f.read()
         except OSError:
             continue
-        name = text[text.index('(') + 1:text.rindex(')')]
         rest = text[text.rindex(')') + 2:].split()
-        if int(rest[3]) == session:  # field 6: the session id
-            out[int(entry)] = (name, int(rest[11]) + int(rest[12]))
+        stats[int(entry)] = (text[text.index('(') + 1:text.rindex(')')], int(rest[1]),
+                             int(rest[11]) + int(rest[12]))
+    out = {}
+    for pid, (name, _, ticks) in stats.items():
+        ancestor = pid
+        while ancestor > 1 and ancestor != root:
+            ancestor = stats[ancestor][1] if ancestor in stats else 0
+        if ancestor == root:
+            out[pid] = (name, ticks)
     return out
 
 
@@ -52,15 +59,14 @@ def _machine_busy():
 
 
 def cpu_percent(before, after, wall_s):
-    """% of one core used between two _ticks_by_pid samples: (simulator, whole session)."""
+    """% of one core used between two _ticks_by_pid samples, by command name (/proc's, cut at
+    15 characters: rason_sim_node, motion_decomp_n, vision_synth_no ...)."""
     hz = os.sysconf('SC_CLK_TCK')
-    sim = total = 0.0
+    by_name = {}
     for pid, (name, ticks) in after.items():
         used = ticks - before.get(pid, (name, 0))[1]
-        total += used
-        if name.startswith(SIM_NODE[:15]):  # /proc's comm is cut at 15 characters
-            sim += used
-    return 100.0 * sim / hz / wall_s, 100.0 * total / hz / wall_s
+        by_name[name] = by_name.get(name, 0.0) + 100.0 * used / hz / wall_s
+    return by_name
 
 
 class _Watch(object):
@@ -119,9 +125,9 @@ def _wait(condition, timeout, proc, what, log_dir):
         time.sleep(0.2)
 
 
-def measure_one(procs, n, window, log, settle=3.0, start_timeout=120.0):
+def measure_one(procs, n, window, log, settle=3.0, start_timeout=120.0, turning=True):
     """One fleet of n robots: started, every camera's frames processed and every robot
-    turning, ``settle`` s more, then ``window`` wall s measured."""
+    turning (unless not ``turning``), ``settle`` s more, then ``window`` wall s measured."""
     from rason_msgs.msg import Action
     robots = robots_of(n)
     watch = _Watch(robots)
@@ -134,7 +140,7 @@ def measure_one(procs, n, window, log, settle=3.0, start_timeout=120.0):
         actions = {r: rospy.Publisher('/%s/jason/action' % r, Action, queue_size=1) for r in robots}
         _wait(lambda: all(p.get_num_connections() >= 1 for p in actions.values()), 30.0, proc,
               'the decomposers did not connect', procs.log_dir)
-        for k, (r, pub) in enumerate(sorted(actions.items())):
+        for k, (r, pub) in enumerate(sorted(actions.items()) if turning else ()):
             pub.publish(Action(agent=r, action_id=k + 1, action='turn', parameters=[str(TURN_DEGREES)]))
         time.sleep(settle)
         machine0, ticks0, start = _machine_busy(), _ticks_by_pid(proc.pid), time.monotonic()
@@ -153,12 +159,14 @@ def measure_one(procs, n, window, log, settle=3.0, start_timeout=120.0):
         if rospy.has_param('/use_sim_time'):
             rospy.delete_param('/use_sim_time')
     wall = end - start
-    sim_cpu, total_cpu = cpu_percent(ticks0, ticks1, wall)
+    by_name = cpu_percent(ticks0, ticks1, wall)
+    sim_cpu, total_cpu = by_name.get(SIM_NODE, 0.0), sum(by_name.values())
     rtf = stats.real_time_factor(pairs)
     sim_span = pairs[-1][1] - pairs[0][1] if len(pairs) > 1 else 0.0
-    out = {'robots': n, 'cameras': len(frames), 'window_s': round(wall, 2), 'real_time_factor': rtf,
+    out = {'robots': n, 'turning': turning, 'cameras': len(frames), 'window_s': round(wall, 2), 'real_time_factor': rtf,
            'sim_cpu_pct': round(sim_cpu, 1), 'total_cpu_pct': round(total_cpu, 1),
            'processes': len(ticks1),
+           'cpu_by_process_pct': {name: round(pct, 1) for name, pct in sorted(by_name.items())},
            'machine_cpu_pct': round(100.0 * os.cpu_count() * (machine1[0] - machine0[0])
                                     / max(1, machine1[1] - machine0[1]), 1),
            'frames_per_sim_s': {r: round(c / sim_span, 2) if sim_span > 0 else None for r, c in frames.items()},
