@@ -25,7 +25,15 @@ def test_the_table_has_a_row_per_size_and_names_turns_that_ended():
     text = fleet_sim_report.text({'window_s': 20.0, 'sizes': sizes})
     rows = [line for line in text.splitlines() if line.startswith('| ') and line[2].isdigit()]
     assert [r.split(' | ')[2] for r in rows] == ['2.50', '1.80']
+    assert [r.split(' | ')[5] for r in rows] == ['36', '50']  # 90 % over the factor
     assert 'r4 with 4 robots: no_progress' in text
+
+
+def test_the_cpu_by_process_table_leaves_the_idle_ones_out():
+    sizes = [size(2, 2.5)]
+    sizes[0]['cpu_by_process_pct'] = {'rason_sim_node': 40.0, 'vision_synth_no': 20.0, 'sleep': 0.0}
+    text = fleet_sim_report.text({'window_s': 20.0, 'sizes': sizes})
+    assert '| robots | rason_sim_node | vision_synth_no |' in text and '| 2 | 40 | 20 |' in text
 
 
 def test_cpu_is_the_ticks_used_in_the_window_over_its_length_by_command():

@@ -33,17 +33,28 @@ def text(fleet_sim):
            'of one core: the simulator process, every process of the launch (simulator, decomposers, '
            'fault injectors, diagnosis reporters, vision_synth, roslaunch), and the whole machine '
            '(other work on it included). Frames: each camera robot\'s robots_seen per simulated '
-           'second (the camera runs at 10 Hz).' % fleet_sim.get('window_s', 0), '',
+           'second (the camera runs at 10 Hz). Launch CPU per simulated second: the launch\'s CPU over the '
+           'real-time factor, what a simulated second costs whatever else the machine does (on 2 free '
+           'cores, 200 %% of it allows real time at best).' % fleet_sim.get('window_s', 0), '',
            _row(['robots', 'cameras', 'real-time factor', 'simulator CPU %', 'launch CPU %',
-                 'processes', 'machine CPU %', 'frames / sim s']),
-           _row(['---'] * 8)]
+                 'launch CPU % per sim s', 'processes', 'machine CPU %', 'frames / sim s']),
+           _row(['---'] * 9)]
     for s in fleet_sim.get('sizes', []):
         rtf = s['real_time_factor']
         out.append(_row([str(s['robots']), str(s['cameras']), '%.2f' % rtf if rtf is not None else '-',
-                         '%.0f' % s['sim_cpu_pct'], '%.0f' % s['total_cpu_pct'], str(s['processes']),
+                         '%.0f' % s['sim_cpu_pct'], '%.0f' % s['total_cpu_pct'],
+                         '%.0f' % (s['total_cpu_pct'] / rtf) if rtf else '-', str(s['processes']),
                          '%.0f' % s['machine_cpu_pct'],
                          ', '.join('%s %s' % (r, '%.1f' % f if f is not None else '-')
                                    for r, f in sorted(s['frames_per_sim_s'].items()))]))
+    names = sorted({name for s in fleet_sim.get('sizes', []) for name in s.get('cpu_by_process_pct', {})
+                    if name not in ('sleep', 'roslaunch')})
+    if names:
+        out += ['', 'CPU by process (% of one core; each name\'s processes together; /proc cuts names at 15 '
+                'characters):', '', _row(['robots'] + names), _row(['---'] * (len(names) + 1))]
+        for s in fleet_sim.get('sizes', []):
+            cpu = s.get('cpu_by_process_pct', {})
+            out.append(_row([str(s['robots'])] + ['%.0f' % cpu.get(name, 0.0) for name in names]))
     ended = ['%s with %d robots: %s' % (r, s['robots'], res) for s in fleet_sim.get('sizes', [])
              for r, res in sorted(s.get('turns_ended_early', {}).items())]
     if ended:
