@@ -125,7 +125,7 @@ def test_plain_roslaunch_shows_the_effective_configuration_first():
     world = pytest.importorskip('rospkg').RosPack().get_path('rason_sim') + '/config/two_robots.yaml'
     # fualt:= is misspelt: roslaunch ignores it, and the default fault shows
     assert configuration_lines('faulty_helper.launch', 'fualt:=left_actuator', 'rate:=2') == [
-        '[configuration] sim.launch: world %s (robots helper, faulty), rate 2, seed 1, lockstep auto' % world,
+        '[configuration] sim.launch: world %s (robots helper, faulty), robots all, rate 2, seed 1, lockstep auto' % world,
         '[configuration] robot.launch: namespace /helper/, program %s/helper.mas2j, wiring %s/perceptions.yaml, '
         'fault none, camera true, profile sim, fleet ros' % (agents, agents),
         '[configuration] robot.launch: namespace /faulty/, program %s/faulty.mas2j, wiring none, '

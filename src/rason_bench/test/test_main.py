@@ -6,10 +6,11 @@ from rason_bench import main
 
 def test_every_part_runs_by_default_and_preemption_can_run_alone():
     assert set(main.PARTS) == {'startup', 'cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'hostile', 'fleet',
-                               'behaviour', 'budget'}
-    # behaviour starts the simulator on the bench's master and sets /use_sim_time; budget's
-    # case-study runs have masters of their own
-    assert main.PARTS[-2:] == ('behaviour', 'budget')
+                               'behaviour', 'budget', 'fleet_sim'}
+    # behaviour and fleet_sim start the simulator on the bench's master and set /use_sim_time;
+    # budget's case-study runs have masters of their own
+    assert main.PARTS[-3:] == ('behaviour', 'budget', 'fleet_sim')
+    assert main._parse(['--only', 'fleet_sim']).only == ['fleet_sim']
     assert main._parse(['--only', 'preemption']).only == ['preemption']
     assert main._parse([]).only is None
 

@@ -26,13 +26,13 @@
 #include <vector>
 
 #include "rason_sim/camera_messages.h"
+#include "rason_sim/camera_worker.h"
 #include "rason_sim/depth_camera.h"
 #include "rason_sim/diff_drive.h"
 #include "rason_sim/frames.h"
 #include "rason_sim/lockstep_acks.h"
 #include "rason_sim/pacing.h"
 #include "rason_sim/params.h"
-#include "rason_sim/renderer.h"
 #include "rason_sim/world.h"
 
 namespace rason_sim {
@@ -42,7 +42,7 @@ namespace {
 
 struct Robot {
   RobotConfig config;
-  int root_qpos = -1, root_qvel = -1, body = -1, camera = -1;
+  int root_qpos = -1, root_qvel = -1, body = -1, camera = -1, camera_slot = -1;
   int left_qpos = -1, right_qpos = -1, left_dof = -1, right_dof = -1;
   int left_motor = -1, right_motor = -1;
   double left_integral = 0.0, right_integral = 0.0;  // servo's integral term (rad)
@@ -100,7 +100,7 @@ class Simulator {
 
   ~Simulator() {
     if (ack_spinner_) ack_spinner_->stop();
-    renderer_.reset();
+    camera_worker_.reset();
     if (data_) mj_deleteData(data_);
     if (model_) mj_deleteModel(model_);
   }
@@ -135,9 +135,10 @@ class Simulator {
       clock_pub_.publish(clock);
       if (t >= next_camera) {
         for (auto& robot : robots_) {
+          if (robot->camera_slot < 0) continue;
+          camera_worker_->waitIdle(robot->camera_slot);  // its last frame is out
           if (params_.lockstep) awaitFrameDone(*robot);
-          if (publishCamera(*robot, t) && params_.lockstep && robot->frame_ack_sub.getNumPublishers() > 0)
-            robot->frame_ack.onSent(t);
+          submitCamera(*robot, t);
         }
         next_camera += 1.0 / params_.camera_rate;
         if (next_camera < t) next_camera = t;
@@ -182,12 +183,10 @@ class Simulator {
     if (!model_) throw std::runtime_error(std::string("MuJoCo rejected the world: ") + error);
     data_ = mj_makeData(model_);
     mj_forward(model_, data_);
-    for (const RobotConfig& robot : world_.robots) {
-      if (robot.camera) {
-        renderer_.reset(new OffscreenRenderer(model_, world_.camera.width, world_.camera.height));
-        break;
-      }
-    }
+    const int cameras = static_cast<int>(std::count_if(world_.robots.begin(), world_.robots.end(),
+                                                       [](const RobotConfig& r) { return r.camera; }));
+    if (cameras > 0)
+      camera_worker_.reset(new CameraWorker(model_, world_.camera.width, world_.camera.height, cameras));
   }
 
   void setUpRobot(ros::NodeHandle& nh, const RobotConfig& config) {
@@ -220,6 +219,7 @@ class Simulator {
     robot->true_pose_pub = nh.advertise<geometry_msgs::PoseStamped>(n + "/true_pose", 50);
     if (config.camera) {
       robot->camera = requireId(model_, mjOBJ_CAMERA, cameraName(n));
+      robot->camera_slot = cameras_set_up_++;
       robot->image_pub = nh.advertise<sensor_msgs::Image>(n + "/camera/rgb/image_raw", 2);
       robot->depth_pub = nh.advertise<sensor_msgs::Image>(n + "/camera/depth_registered/image_raw", 2);
       robot->cloud_pub = nh.advertise<sensor_msgs::PointCloud2>(n + "/camera/depth_registered/points", 2);
@@ -404,18 +404,29 @@ class Simulator {
     ack.stopReached();
   }
 
-  // Renders and publishes robot's camera at t; false when it has none or nobody looks.
-  bool publishCamera(Robot& robot, double t) {
-    if (robot.camera < 0 || !renderer_) return false;
+  // Robot's camera at t to the camera worker, which renders and publishes it (publishFrame);
+  // nothing when nobody looks, as rendering is the costly part.
+  void submitCamera(Robot& robot, double t) {
     const bool cloud_wanted = robot.cloud_pub.getNumSubscribers() > 0;
     const bool wanted = cloud_wanted || robot.image_pub.getNumSubscribers() > 0 ||
                         robot.depth_pub.getNumSubscribers() > 0;
-    if (!wanted) return false;  // rendering is the costly part; skip it when nobody looks
-    renderer_->render(model_, data_, robot.camera, rgb_, depth_);
+    if (!wanted) return;
+    Robot* raw = &robot;
+    camera_worker_->submit(robot.camera_slot, model_, data_, robot.camera,
+                           [this, raw, t, cloud_wanted](const std::vector<unsigned char>& rgb,
+                                                         const std::vector<float>& depth, double near, double far) {
+                             publishFrame(*raw, t, cloud_wanted, rgb, depth, near, far);
+                           });
+  }
+
+  // On the camera worker's thread: the images of a rendered frame, published; with lockstep
+  // and a consumer, the frame is then waited for (awaitFrameDone).
+  void publishFrame(Robot& robot, double t, bool cloud_wanted, const std::vector<unsigned char>& rgb,
+                    const std::vector<float>& depth, double near, double far) {
     sensor_msgs::Image image;
     sensor_msgs::PointCloud2 cloud;
-    buildFrame(intrinsics_, rgb_.data(), depth_.data(), renderer_->nearPlane(), renderer_->farPlane(),
-               params_.noise, rng_, image.data, depth_mm_, cloud_wanted ? &cloud.data : nullptr);
+    buildFrame(intrinsics_, rgb.data(), depth.data(), near, far, params_.noise, rng_, image.data, depth_mm_,
+               cloud_wanted ? &cloud.data : nullptr);
     std_msgs::Header header;
     header.stamp = ros::Time(t);
     header.frame_id = robot.config.name + "/camera_rgb_optical_frame";
@@ -428,7 +439,7 @@ class Simulator {
       robot.cloud_pub.publish(cloud);
     }
     robot.info_pub.publish(cameraInfo(intrinsics_, header));
-    return true;
+    if (params_.lockstep && robot.frame_ack_sub.getNumPublishers() > 0) robot.frame_ack.onSent(t);
   }
 
   // /tf_static is latched: every message carries all static transforms.
@@ -445,14 +456,13 @@ class Simulator {
   ros::CallbackQueue ack_queue_;  // lockstep's reports, served by ack_spinner_
   std::unique_ptr<ros::AsyncSpinner> ack_spinner_;
   LockstepPace lockstep_pace_;  // at factor 0 with lockstep
-  PixelNoise rng_;
+  PixelNoise rng_;  // the camera worker's
   mjModel* model_ = nullptr;
   mjData* data_ = nullptr;
-  std::unique_ptr<OffscreenRenderer> renderer_;
+  std::unique_ptr<CameraWorker> camera_worker_;  // with a camera in the world
+  int cameras_set_up_ = 0;
   Intrinsics intrinsics_;
-  std::vector<unsigned char> rgb_;
-  std::vector<float> depth_;
-  std::vector<uint16_t> depth_mm_;
+  std::vector<uint16_t> depth_mm_;  // the camera worker's
   std::vector<std::shared_ptr<Robot>> robots_;
   ros::Publisher clock_pub_, tf_pub_, tf_static_pub_;
 };

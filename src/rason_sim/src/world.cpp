@@ -107,6 +107,15 @@ void validate(const WorldConfig& world) {
       if (!(slip >= 0.0 && slip < 0.5))
         throw std::invalid_argument("robot '" + robot.name + "': wheel slip must be in [0, 0.5)");
   }
+  // Two bases started inside each other would be thrown apart by the contact solver.
+  for (size_t i = 0; i < world.robots.size(); ++i)
+    for (size_t j = i + 1; j < world.robots.size(); ++j) {
+      const Pose2D& a = world.robots[i].start;
+      const Pose2D& b = world.robots[j].start;
+      if (std::hypot(a.x - b.x, a.y - b.y) < 2.0 * world.base.radius)
+        throw std::invalid_argument("robots '" + world.robots[i].name + "' and '" +
+                                    world.robots[j].name + "' start overlapping");
+    }
   if (world.room_x <= 1.0 || world.room_y <= 1.0) throw std::invalid_argument("room too small");
   if (world.timestep <= 0.0 || world.timestep > 0.01)
     throw std::invalid_argument("timestep must be in (0, 0.01] s");

@@ -159,6 +159,16 @@ TEST(Params, AWorldWithoutRobotsIsRefused) {
   EXPECT_EQ(errorOf(params), "~robots (list of names) is not set");
 }
 
+TEST(Params, RobotsStartingInsideEachOtherAreRefused) {
+  XmlRpcValue params = oneRobot();
+  params["robots"][1] = std::string("duo");  // both at the default (0, 0)
+  EXPECT_EQ(errorOf(params), "robots 'solo' and 'duo' start overlapping");
+  params["duo"]["x"] = 0.3;  // less than two base radii (0.354 m) apart
+  EXPECT_EQ(errorOf(params), "robots 'solo' and 'duo' start overlapping");
+  params["duo"]["x"] = 0.4;
+  EXPECT_EQ(errorOf(params), "");
+}
+
 TEST(Params, ABadWorldParameterSaysWhichAndWhy) {
   struct Case {
     const char* key;

@@ -3,7 +3,7 @@ their own and writes ``report.md``, ``results.json`` and PNG plots.
 
 Options: ``--seconds`` (length of one measured run, default 1), ``--quick`` (a subset of
 cells, fewer samples, for a smoke run), ``--only`` (startup, cycle, latency, cpu, reaction,
-scale, preemption, hostile, fleet, behaviour, budget; repeatable), ``--take-backs`` (rounds of the preemption part), ``--out``
+scale, preemption, hostile, fleet, behaviour, budget, fleet_sim; repeatable), ``--take-backs`` (rounds of the preemption part), ``--out``
 (directory).
 """
 import argparse
@@ -17,9 +17,9 @@ import time
 
 from rason_bench import plots, report, thesis
 
-#: The parts of a run, in the order they run (behaviour and budget last: they start the simulator).
+#: The parts of a run, in the order they run (behaviour, budget and fleet_sim last: they start the simulator).
 PARTS = ('startup', 'cycle', 'latency', 'cpu', 'reaction', 'scale', 'preemption', 'hostile', 'fleet', 'behaviour',
-         'budget')
+         'budget', 'fleet_sim')
 #: Starts of a one-agent rason_mas the startup part times (normal, --quick).
 STARTS, STARTS_QUICK = 5, 3
 TAKE_BACKS, TAKE_BACKS_QUICK = 200, 50
@@ -102,7 +102,7 @@ def main(argv=None):
     failed = []
     try:
         import rospy
-        from rason_bench import behaviour, experiments, fleet, hostile, robot_budget, startup
+        from rason_bench import behaviour, experiments, fleet, fleet_sim, hostile, robot_budget, startup
         from rason_bench.harness import Harness
         rospy.init_node('rason_bench', disable_signals=True)
         harness = Harness()
@@ -139,7 +139,10 @@ def main(argv=None):
                 ('behaviour.sim', 'behaviour: simulator rates (two_robots.launch)', lambda: behaviour.sim_rates(
                     procs, sim_window, log))],
             'budget': [('budget', 'robot budget: the case study, each robot in a CPU cgroup (rate 1)',
-                        lambda: robot_budget.measure(args.quick, log))]}
+                        lambda: robot_budget.measure(args.quick, log))],
+            'fleet_sim': [('fleet_sim', 'the simulator with a fleet: N = %s robots, lockstep on (rate 0)'
+                           % ', '.join(str(n) for n in fleet_sim.SIZES),
+                           lambda: fleet_sim.measure(procs, args.quick, log))]}
         for part in parts:
             for key, title, measure in steps[part]:
                 if title:

@@ -1,5 +1,5 @@
 """Turning measurements into verdicts and Markdown (pure: dicts in, text out)."""
-from rason_bench import budget_report, fleet_report, startup_report, stats, thesis
+from rason_bench import budget_report, fleet_report, fleet_sim_report, startup_report, stats, thesis
 
 #: The issue's goals.
 CYCLE_RATIO_GOAL = 1.2
@@ -87,6 +87,7 @@ def goals(results):
     out += _hostile_goals(results.get('hostile', {}))
     out += fleet_report.goals(results.get('fleet', {}))
     out += budget_report.goals(results.get('budget', {}))
+    out += fleet_sim_report.goals(results.get('fleet_sim', {}))
     stop = results.get('preemption', {}).get('stop_ms')
     if stop:
         goal = ('preemption: take-back -> zero twist p99 <= %g ms (one 50 Hz control period plus transport)'
@@ -480,6 +481,9 @@ def markdown(results):
         out += ['## Behaviour', '', behaviour_text(results['behaviour'])]
     if 'budget' in results:
         out += ['## What a robot needs: the case study per robot', '', budget_report.text(results['budget'])]
+    if 'fleet_sim' in results:
+        out += ['## The simulator with a fleet: real-time factor and CPU against the number of robots', '',
+                fleet_sim_report.text(results['fleet_sim'])]
     if results.get('durations_s'):
         out += ['Duration: %s s in all; %s.' % (
             '%.0f' % results['duration_s'] if 'duration_s' in results else '?',
