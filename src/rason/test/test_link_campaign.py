@@ -81,3 +81,20 @@ def test_the_report_sets_drawn_and_clean_links_side_by_side(tmp_path):
     assert '| 2 | 1002 | %s | clean | correct | %s | no | 22.0 |' % (plan[1]['fault'], plan[1]['fault']) in text
     save(records, str(tmp_path / 'results.json'))
     assert json.loads((tmp_path / 'results.json').read_text())[2]['verdict']['outcome'] == 'undiagnosed'
+
+
+def test_the_report_is_made_again_from_a_campaign_s_results(tmp_path):
+    from rason_hosts.cli import main
+    plan = draw_plan(1, seed=5)
+    records = [{'scenario': plan[0], 'link': 'drawn', 'diagnosis_s': 31.0,
+                'verdict': judge(plan[0], (plan[0]['fault'], ''))},
+               {'scenario': on_clean_link(plan[0]), 'link': 'clean', 'diagnosis_s': 25.0,
+                'verdict': judge(plan[0], ('right_actuator', ''))}]
+    save(records, str(tmp_path / 'results.json'))
+    (tmp_path / 'campaign.json').write_text(json.dumps({'command': 'rosrun rason hosts campaign --runs 1', 'seed': 5,
+                                                        'started': '2026-11-27 01:00', 'rate': 0, 'cores': 2}))
+    assert main(['campaign', '--analyze-only', '--out', str(tmp_path)]) == 1     # a wrong diagnosis
+    text = (tmp_path / 'report.md').read_text()
+    assert text.startswith('# The case study across hosts: 1 scenarios (seed 5)')
+    assert 'Made by `rosrun rason hosts campaign --runs 1` from 2026-11-27 01:00 UTC' in text
+    assert '| clean | 1 | 0 | 0 | 1 |' in text

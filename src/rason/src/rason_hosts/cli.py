@@ -4,6 +4,7 @@ the case study with each robot on a host of its own (needs root);
 rosrun rason hosts campaign --runs N --out DIR [--recovery]: many such runs, the link drawn,
 each beside the same run on a clean link (link_campaign)."""
 import argparse
+import json
 import os
 import re
 import signal
@@ -39,6 +40,8 @@ def main(argv=None):
     campaign.add_argument('--rate', type=float, default=1, help="the simulator's real-time factor (0: lockstep)")
     campaign.add_argument('--timeout', type=float, default=240, help='wall s a run may take to its diagnosis')
     campaign.add_argument('--out', required=True, help='folder for report.md, results.json and the runs\' logs')
+    campaign.add_argument('--analyze-only', action='store_true',
+                          help="make report.md again from OUT/results.json (e.g. of a campaign stopped early)")
     args = parser.parse_args(argv)
     if args.command == 'case-study':
         return _case_study(args)
@@ -97,7 +100,16 @@ def _campaign(args, argv_seen=None):
     # SIGTERM ends the campaign as Ctrl-C does: through the with-blocks that remove each run's hosts
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
     args.out = os.path.abspath(args.out)
+    if args.analyze_only:
+        with open(os.path.join(args.out, 'results.json')) as f:
+            records = json.load(f)
+        return _campaign_report(records, args.out)
     os.makedirs(args.out, exist_ok=True)
+    made = {'command': 'rosrun rason hosts ' + ' '.join(sys.argv[1:] if argv_seen is None else argv_seen),
+            'started': time.strftime('%Y-%m-%d %H:%M', time.gmtime()), 'rate': args.rate, 'seed': args.seed,
+            'cores': os.cpu_count()}
+    with open(os.path.join(args.out, 'campaign.json'), 'w') as f:
+        json.dump(made, f, indent=1)
     plan = link_campaign.draw_plan(args.runs, args.seed, faults, args.recovery)
     records = []
     for scenario in plan:
@@ -126,15 +138,23 @@ def _campaign(args, argv_seen=None):
                 scenario['run'], len(plan), link, played['fault'], link_campaign.link_label(played),
                 record['verdict']['outcome'],
                 ' in %.1f s' % record['diagnosis_s'] if record.get('diagnosis_s') else ''), flush=True)
+    return _campaign_report(records, args.out)
+
+
+def _campaign_report(records, out):
+    """report.md of out from records, with how the campaign was made (out/campaign.json)."""
+    from . import link_campaign
+    with open(os.path.join(out, 'campaign.json')) as f:
+        made = json.load(f)
+    scenarios = len({r['scenario']['run'] for r in records})
     title = 'The case study across hosts: %d scenarios (seed %d), each on its drawn link and on a clean one' % (
-        len(plan), args.seed)
-    how = ('Made by `rosrun rason hosts %s` on %s UTC (%d cores, shared), the simulator at real-time factor %g; '
-           'times are wall seconds from the robots\' launch to Faulty\'s diagnosis. Each run\'s logs: `runs/`, '
-           'not committed.' % (' '.join(sys.argv[1:] if argv_seen is None else argv_seen),
-                               time.strftime('%Y-%m-%d %H:%M', time.gmtime()), os.cpu_count(), args.rate))
-    with open(os.path.join(args.out, 'report.md'), 'w') as f:
+        scenarios, made['seed'])
+    how = ('Made by `%s` from %s UTC (%d cores, shared), the simulator at real-time factor %g; times are wall '
+           'seconds from the robots\' launch to Faulty\'s diagnosis. Each run\'s logs: `runs/`, not committed.'
+           % (made['command'], made['started'], made['cores'], made['rate']))
+    with open(os.path.join(out, 'report.md'), 'w') as f:
         f.write(link_campaign.report(records, title, how))
-    print('report: %s' % os.path.join(args.out, 'report.md'), flush=True)
+    print('report: %s' % os.path.join(out, 'report.md'), flush=True)
     return 1 if any(r['verdict']['outcome'] == 'wrong' for r in records) else 0
 
 
