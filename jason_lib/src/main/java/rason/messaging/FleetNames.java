@@ -39,8 +39,11 @@ public final class FleetNames {
 
     /** What .all_names answers: the hosted agents and every reachable agent of other processes, sorted. */
     public List<String> allNames() {
-        Set<String> all = new TreeSet<>(jasonAgents.get().keySet());
-        all.addAll(hosted);
+        Set<String> all = new TreeSet<>(hosted);
+        // an agent being killed is still in Jason's table while its architecture leaves: it is gone
+        for (Map.Entry<String, LocalAgArch> agent : jasonAgents.get().entrySet())
+            if (agent.getValue().isRunning())
+                all.add(agent.getKey());
         all.addAll(fleet.reachable());
         return new ArrayList<>(all);
     }

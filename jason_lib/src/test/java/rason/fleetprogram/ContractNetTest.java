@@ -77,7 +77,7 @@ class ContractNetTest {
     }
 
     /** The agent stops (its robot's process died): the others' present/1 of it drops. */
-    private void leave(String agent) {
+    private void leave(String agent) throws Exception {
         assertTrue(RuntimeServicesFactory.get().killAgent(agent, "test", 0), agent + " killed");
     }
 
