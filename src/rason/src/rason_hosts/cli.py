@@ -130,7 +130,7 @@ def _campaign(args, argv_seen=None):
                     closest, back = outcome.mission_judged()
                     record['diagnosis_s'] = run.marks['diagnosis'] - run.marks['launched']
                 except HostsError as e:
-                    failure = str(e).splitlines()[0]
+                    failure = str(e).splitlines()[0].split('; last lines')[0]
             record['verdict'] = link_campaign.judge(played, diagnosis, failure, mission, closest, back)
             records.append(record)
             link_campaign.save(records, os.path.join(args.out, 'results.json'))
