@@ -10,7 +10,7 @@ def test_the_plan_is_drawn_from_the_seed_with_every_fault_in_turn():
     plan = draw_plan(40, seed=3)
     assert plan == draw_plan(40, seed=3)
     assert plan != draw_plan(40, seed=4)
-    assert [s['fault'] for s in plan[:8]] == list(FAULTS) * 2
+    assert [s['fault'] for s in plan[:10]] == list(FAULTS) * 2
     assert [s['seed'] for s in plan[:3]] == [3001, 3002, 3003]
     assert {s['loss'] for s in plan} == set(LOSSES)
     assert {s['delay_ms'] for s in plan} == set(DELAYS_MS)

@@ -11,11 +11,11 @@ import json
 import random
 import statistics
 
-FAULTS = ('left_actuator', 'right_actuator', 'both_actuators', 'odometry')
-LOSSES = (0, 10, 20)                # % of frames lost each way on each robot's link
-DELAYS_MS = (0, 50, 100)            # ms added each way to each robot's connection to the broker
+FAULTS = ('none', 'left_actuator', 'right_actuator', 'both_actuators', 'odometry')
+LOSSES = (0, 10, 20, 30)            # % of frames lost each way on each robot's link
+DELAYS_MS = (0, 50, 100, 200)       # ms added each way to each robot's connection to the broker
 PARTITION_CHANCE = 0.5
-PARTITION_SECONDS = (2.0, 8.0)      # how long Helper's link is cut
+PARTITION_SECONDS = (1.0, 10.0)     # how long Helper's link is cut
 PARTITION_AFTER = (0.0, 6.0)        # s after Helper's search began
 MISSION_TOLERANCE = 0.15            # m: the mission's judge (as the fault-tolerance rostests')
 CLEAN = {'loss': 0, 'delay_ms': 0, 'partition': None}
