@@ -42,11 +42,11 @@ def test_the_mission_is_judged_from_the_start_pose_one_metre_ahead():
     start = (0.0, -1.0, -0.75, -math.pi / 2)
     at_goal = (1.0, -1.0, -1.75, -math.pi / 2)
     back = (2.0, -1.02, -0.76, math.pi / 2)
-    closest, home = judge_mission([start, at_goal, back])
+    closest, home = judge_mission({'faulty': [start, at_goal, back]})
     assert closest == pytest.approx(0.0, abs=1e-9)
     assert home == pytest.approx(math.hypot(0.02, 0.01))
-    assert judge_mission([]) == (None, None)
-    closest, _ = judge_mission([start, (1.0, -1.0, -1.25, 0.0)])
+    assert judge_mission({'faulty': []}) == (None, None)
+    closest, _ = judge_mission({'faulty': [start, (1.0, -1.0, -1.25, 0.0)]})
     assert closest == pytest.approx(0.5)
 
 

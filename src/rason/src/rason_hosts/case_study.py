@@ -115,11 +115,9 @@ def true_poses(csv_lines):
 def judge_mission(poses, completed_by=None):
     """How Faulty's own mission went by the true poses: (closest to the goal of a robot that
     completed it, Faulty's distance from its start at the end), the goal MISSION_LENGTH ahead
-    of Faulty's first pose. poses: {robot: [(wall, x, y, yaw)]}, or Faulty's list alone;
-    completed_by: the robots the mission's line names (default Faulty). A mission delegated to
-    another robot brings Faulty back to nothing: the second value is then None."""
-    if not isinstance(poses, dict):
-        poses = {'faulty': poses}
+    of Faulty's first pose. poses: {robot: [(wall, x, y, yaw)]}; completed_by: the robots the
+    mission's line names (default Faulty). A mission delegated to another robot brings Faulty
+    back to nothing: the second value is then None."""
     by = completed_by or ['faulty']
     own = poses.get('faulty') or []
     if not own:

@@ -13,7 +13,7 @@ import tempfile
 import time
 
 from .hosts import DEFAULT_PREFIX, cleanup, list_namespaces
-from .link_campaign import FAULTS
+from . import link_campaign
 
 
 def main(argv=None):
@@ -35,7 +35,7 @@ def main(argv=None):
     campaign.add_argument('--runs', type=int, default=10,
                           help='drawn scenarios; each runs on its link and on a clean one')
     campaign.add_argument('--seed', type=int, default=1)
-    campaign.add_argument('--faults', default='all', help='all, or a comma list of ' + ','.join(FAULTS))
+    campaign.add_argument('--faults', default='all', help='all, or a comma list of ' + ','.join(link_campaign.FAULTS))
     campaign.add_argument('--recovery', action='store_true', help='the fault-tolerance mission, judged by true poses')
     campaign.add_argument('--rate', type=float, default=1, help="the simulator's real-time factor (0: lockstep)")
     campaign.add_argument('--timeout', type=float, default=240, help='wall s a run may take to its diagnosis')
@@ -89,7 +89,6 @@ def _case_study(args):
 def _campaign(args, argv_seen=None):
     from .case_study import HOST_NAMES, CaseStudyOnHosts
     from .hosts import Hosts, HostsError
-    from . import link_campaign
 
     faults = link_campaign.FAULTS if args.faults == 'all' else tuple(args.faults.split(','))
     unknown = sorted(set(faults) - set(link_campaign.FAULTS))
@@ -143,7 +142,6 @@ def _campaign(args, argv_seen=None):
 
 def _campaign_report(records, out):
     """report.md of out from records, with how the campaign was made (out/campaign.json)."""
-    from . import link_campaign
     with open(os.path.join(out, 'campaign.json')) as f:
         made = json.load(f)
     scenarios = len({r['scenario']['run'] for r in records})
