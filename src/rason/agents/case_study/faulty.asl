@@ -84,11 +84,16 @@ helpTimeout(120000).
 <- .print("This failure is not one I can diagnose: ", R1);
     !conclude(undiagnosed, "motion failed without no_progress or bad_move").
 
-// IMPROVED: a broadcast to nobody would wait for ever.
+// IMPROVED: a broadcast to nobody would wait for ever. A robot not in reach yet (still
+// starting, or its first contact slow on a lossy link) is waited for up to helpTimeout.
 +!askForHelp
 : .my_name(Me) & .all_names(Names) & .delete(Me, Names, Others) & Others \== []
 <- .broadcast(achieve, helpme).
-+!askForHelp
++!askForHelp : .my_name(Me) & helpTimeout(T)
+<- .print("No other robot in reach; I wait for one to ask for help");
+    .wait(present(Other) & Other \== Me, T);
+    !askForHelp.
+-!askForHelp
 <- !conclude(undiagnosed, "no other robot to ask for help").
 
 // IMPROVED: a robot out of reach while I wait for help (robots on hosts of their own: a
