@@ -8,7 +8,8 @@ import pytest
 from motion_decomp import monitor as m
 from motion_decomp.arc import ArcSteering
 from motion_decomp.goto import DirectSteering
-from motion_decomp.pose_source import StampedPose, fresh_pose, stamped_pose
+from motion_decomp.commanded_odometry import integrate
+from motion_decomp.pose_source import CommandedTrail, StampedPose, carried_forward, fresh_pose, stamped_pose
 from motion_model import DT, healthy, one_wheel_fault, step
 from rason_msgs.msg import Event
 
@@ -311,6 +312,68 @@ def test_guided_poses_are_fresh_for_max_age_either_way():
     assert fresh_pose(stamped, 9.5, 0.5) == (1.0, 2.0, 0.5)
     assert fresh_pose(stamped, 9.49, 0.5) is None        # stamped ahead: another clock
     assert fresh_pose(None, 10.0, 0.5) is None
+
+
+def test_the_trail_gives_the_newest_commanded_pose_at_or_before_a_time():
+    trail = CommandedTrail(span=1.0)
+    assert trail.at(5.0) is None
+    for i in range(300):
+        trail.record(i * 0.02, (i * 0.002, 0.0, 0.0))
+    assert trail.at(5.0) == (0.5, 0.0, 0.0)
+    assert trail.at(5.009) == (0.5, 0.0, 0.0)
+    assert trail.at(100.0) == (0.598, 0.0, 0.0)
+    assert trail.at(3.0) is None                 # older than the span: dropped
+    assert len(trail._times) <= 2 * 51
+    trail.record(1.0, (9.0, 9.0, 0.0))           # time went back: a new trail
+    assert trail.at(5.0) == (9.0, 9.0, 0.0) and trail.at(0.99) is None
+
+
+def test_a_guided_pose_is_carried_forward_by_what_the_robot_commanded_since_its_stamp():
+    trail = CommandedTrail(span=5.0)
+    trail.record(10.0, (2.0, 3.0, math.pi))      # the commanded frame is not the guide's
+    trail.record(10.5, (1.7, 3.0, math.pi))      # 0.3 m forward
+    trail.record(11.0, (1.7, 3.0, math.pi / 2))  # then a quarter turn to the right
+    seen = StampedPose((1.0, 0.0, math.pi / 2), 10.0)
+    now = carried_forward(seen, trail, 11.0)
+    assert now.stamp == 10.0                     # its freshness is still when it was seen
+    assert now.pose == pytest.approx((1.0, 0.3, 0.0))
+    assert carried_forward(StampedPose((1.0, 0.0, 0.0), 9.0), trail, 11.0).pose == (1.0, 0.0, 0.0)
+    assert carried_forward(None, trail, 11.0) is None
+
+
+def _guided_goto(latency, carry):
+    """(result, true pose at the end, largest distance between the pose driven on and the
+    true pose) of a guided goto, the feed ``latency`` s late; as motion_decomp's node does,
+    the feed is carried forward along the trail of the commanded odometry when ``carry``."""
+    scheduler = m.MotionScheduler(guided_max_age=1.0)
+    feed, trail = GuidedFeed(latency=latency), CommandedTrail(span=2.0)
+    scheduler.submit('a', 1, 'pose_source', ['guided'])
+    scheduler.submit('a', 2, 'goto', ['1.0', '0.5'])
+    pose = commanded = (0.0, 0.0, 0.0)
+    error, t = 0.0, 0.0
+    while t < 60.0:
+        trail.record(t, commanded)
+        guided = carried_forward(feed(pose, t), trail, t) if carry else feed(pose, t)
+        if guided is not None and scheduler.current is not None:
+            error = max(error, distance(guided.pose, pose))
+        command, feedback = scheduler.step(None, t, guided)
+        if feedback is not None and feedback.action_id == 2:
+            return feedback.result, pose, error
+        if command is not None:
+            pose = step(pose, *healthy(*command))
+            commanded = integrate(commanded, command[0], command[1], DT)
+        t += DT
+    raise AssertionError('still driving after 60 s')
+
+
+def test_a_guided_pose_late_by_two_robots_links_is_driven_on_as_if_on_time():
+    # 0.6 s late: a camera frame, then the seeing robot's and this robot's links to a broker
+    result, pose, error = _guided_goto(latency=0.6, carry=True)
+    assert result == Event.OK
+    assert distance(pose, (1.0, 0.5)) <= 0.05 + 0.005
+    assert error <= 0.005
+    _, _, uncarried_error = _guided_goto(latency=0.6, carry=False)
+    assert uncarried_error >= 0.1 * 0.6 * 0.9      # the guided speed times the latency
 
 
 def test_a_zero_stamp_counts_as_received_and_a_non_finite_pose_as_none():

@@ -63,7 +63,7 @@ from rason_msgs.msg import Event
 from motion_decomp import monitor
 from motion_decomp.commanded_odometry import CommandedOdometry
 from motion_decomp.geometry import is_finite_pose, yaw_from_quaternion
-from motion_decomp.pose_source import stamped_pose
+from motion_decomp.pose_source import CommandedTrail, carried_forward, stamped_pose
 
 #: Seconds between two odom_commanded messages while no motion runs.
 IDLE_ODOM_PERIOD = 1.0
@@ -179,6 +179,8 @@ class MotionDecompNode(object):
         self._guided = None     # the latest guided StampedPose, or None
         self._actions = {}      # (agent, action_id) -> the Decomposer's action, queued or running
         self._commanded = CommandedOdometry()
+        # how the robot moved since a guided pose's stamp: a fresh one is carried forward by it
+        self._trail = CommandedTrail(span=self._scheduler.options['guided_max_age'] + 1.0)
         self._frames = frames
         self._commanded_sent = None     # ROS time of the last odom_commanded
         self._cmd_pub = rospy.Publisher('cmd_vel', Twist, queue_size=10)
@@ -246,7 +248,9 @@ class MotionDecompNode(object):
     def _tick(self, _event):
         with self._lock:
             now = rospy.get_time()
-            command, feedback = self._scheduler.step(self._pose, now, self._guided)
+            self._trail.record(now, self._commanded.advance(now))
+            guided = carried_forward(self._guided, self._trail, now)
+            command, feedback = self._scheduler.step(self._pose, now, guided)
             action = None
             if feedback is not None:
                 action = self._actions.pop((feedback.agent, feedback.action_id), None)

@@ -14,6 +14,9 @@
 
 missionLength(1).          // metres ahead of the start (thesis §7: move(1), then move(-1))
 guideWait(20000).          // ms to wait for the helper's first sighting when guided
+guidedTries(10).           // goto tries while guided: the helper's view of me pauses while the
+guidedPause(1000).         // link between us drops (I stand still, goto fails no_progress);
+                           // ms between two tries
 proposalWait(5000).        // ms to wait for the proposals of a call for proposals
 delegateTimeout(180000).   // ms for the winner of the contract net to report back
 
@@ -84,10 +87,20 @@ curvatureSeen(K)
 
 +!driveMission(pose(GX, GY, _), pose(SX, SY, _))
 <- .print("Going on with the mission: to the goal (", GX, ", ", GY, ")");
-    goto(GX, GY);
+    !reach(GX, GY);
     .print("Goal reached; back to the start (", SX, ", ", SY, ")");
-    goto(SX, SY);
+    !reach(SX, SY);
     .print("Back at the start").
+
++!reach(X, Y) : beingGuided & guidedTries(N) <- !guidedGoto(X, Y, N).
++!reach(X, Y) <- goto(X, Y).
+
++!guidedGoto(X, Y, _) <- goto(X, Y).
+-!guidedGoto(X, Y, N)[R1 | Rest]
+: N > 1 & .member(no_progress, [R1 | Rest]) & guidedPause(P)
+<- .print("The helper's view of me stopped coming; I try again (", N - 1, " tries left)");
+    .wait(P);
+    !guidedGoto(X, Y, N - 1).
 
 /* Execute: guided by the helper's camera when the encoders fail */
 
@@ -106,13 +119,16 @@ curvatureSeen(K)
     ?compose(Start, pose(L, 0, 0), Goal);
     .print(H, " sees me at (", X, ", ", Y, "); I follow its view");
     pose_source(guided);
+    +beingGuided;
     !driveMission(Goal, Start);
+    -beingGuided;
     pose_source(odom);
     .send(H, achieve, stopGuiding);
     !missionOver(true, [Me], guided, odometry).
 +!beGuided <- !missionOver(false, [], guided, odometry).
 -!beGuided : helpedBy(H)
-<- !sendSafely(H, achieve, stopGuiding);
+<- -beingGuided;
+    !sendSafely(H, achieve, stopGuiding);
     !missionOver(false, [], guided, odometry).
 
 /* Execute: delegate the mission with a contract net when I cannot move */

@@ -297,10 +297,11 @@ class Hosts:
         self._procs.append(proc)
         return proc
 
-    def call(self, name, argv, timeout=30.0, env=None):
-        """Run argv in host name to completion; returns CompletedProcess (text output)."""
+    def call(self, name, argv, timeout=30.0, env=None, input=None, text=True):
+        """Run argv in host name to completion, input on its stdin; returns CompletedProcess
+        (text output, or bytes when text is false)."""
         argv = ['ip', 'netns', 'exec', self.namespace(name)] + [str(a) for a in argv]
-        return subprocess.run(argv, env=env, capture_output=True, text=True, timeout=timeout)
+        return subprocess.run(argv, env=env, input=input, capture_output=True, text=text, timeout=timeout)
 
     def stop(self, proc, timeout=5.0):
         return stop_process(proc, timeout)

@@ -8,6 +8,7 @@ prints a new key line, e.g. to add as the second line of the file when
 rotating keys.
 """
 import argparse
+import hashlib
 import os
 import secrets
 import sys
@@ -37,6 +38,51 @@ def write_key(path, key, force=False):
         os.write(fd, (HEADER + key + '\n').encode('ascii'))
     finally:
         os.close(fd)
+
+
+#: Shorter secrets are refused, as rason_mas refuses them: 32 bytes is HMAC-SHA256's key size.
+MIN_KEY_BYTES = 32
+
+
+def key_id(secret):
+    """The id that names a key in signed messages: the first 4 bytes of its SHA-256, in hex
+    (what rason_mas logs as ``signed with key …``)."""
+    return hashlib.sha256(secret).hexdigest()[:8]
+
+
+def parse_keys(text, origin='the fleet key'):
+    """The keys of a key file's text, as rason_mas reads them: one a line, blank lines and
+    ``#`` lines skipped, blanks around trimmed, the line's UTF-8 bytes the secret; the first
+    signs, every one verifies.
+
+    :returns: a list of ``(key_id, secret)``, the signing key first
+    :raises ValueError: no key, a key shorter than :data:`MIN_KEY_BYTES`, two keys with one id
+    """
+    keys = []
+    for line in text.splitlines():
+        line = line.strip()
+        if not line or line.startswith('#'):
+            continue
+        secret = line.encode('utf-8')
+        if len(secret) < MIN_KEY_BYTES:
+            raise ValueError('%s: a key of %d bytes is too short (at least %d; make one with '
+                             '`rosrun rason_bridge fleet_key`)' % (origin, len(secret), MIN_KEY_BYTES))
+        if any(key_id(secret) == known for known, _ in keys):
+            raise ValueError('%s: two keys with the id %s' % (origin, key_id(secret)))
+        keys.append((key_id(secret), secret))
+    if not keys:
+        raise ValueError('%s holds no key (make one with `rosrun rason_bridge fleet_key`)' % origin)
+    return keys
+
+
+def read_keys(path):
+    """:func:`parse_keys` of the file at ``path``.
+
+    :raises OSError: the file cannot be read
+    :raises ValueError: as :func:`parse_keys`
+    """
+    with open(path, encoding='utf-8') as f:
+        return parse_keys(f.read(), path)
 
 
 def make_new_key(path):
