@@ -11,6 +11,12 @@ def test_addressed_message_and_reply():
     assert format_message('b', 'a', 'tell', 'x(1)', in_reply_to='7').endswith('x(1) (reply)')
 
 
+def test_a_receipt_is_not_part_of_the_dialogue():
+    # the receiving process's acknowledgement (Java's rason.messaging.Receipts.PERFORMATIVE)
+    assert format_message('faulty', 'helper', 'rason_receipt', 'delivered', in_reply_to='12') is None
+    assert format_message('faulty', 'helper', 'achieve', 'thanks') == 'faulty -> helper: achieve thanks'
+
+
 def test_diagnosis_names_agent_component_and_evidence():
     line = format_diagnosis('/faulty', [('agent', 'faulty'), ('component', 'odometry'),
                                         ('evidence', 'seen moving')])

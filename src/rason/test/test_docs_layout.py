@@ -1,5 +1,5 @@
 """The repository's documentation layout: a short README as the landing page, a README in
-every package, and the site's link checker (tools/check_site_links.py)."""
+every package (its ROS API: test_ros_api.py), and the site's link checker (tools/check_site_links.py)."""
 import importlib.util
 import os
 
@@ -35,18 +35,6 @@ def test_every_package_has_a_readme():
     assert not missing, 'packages without a README.md: %s' % ', '.join(missing)
 
 
-def test_every_package_readme_states_its_ros_api_or_says_it_has_none():
-    # a package README names what it talks over: topics, services, actions or parameters
-    words = ('topic', 'jason/', 'service', '~', 'no nodes')
-    vague = []
-    for p in _packages():
-        with open(os.path.join(ROOT, 'src', p, 'README.md'), encoding='utf-8') as f:
-            text = f.read().lower()
-        if not any(w in text for w in words):
-            vague.append(p)
-    assert not vague, 'package READMEs without a ROS API: %s' % ', '.join(vague)
-
-
 def _write(path, text):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, 'w', encoding='utf-8') as f:
@@ -78,3 +66,50 @@ def test_link_checker_passes_a_whole_site(tmp_path):
     _write(os.path.join(site, 'b.html'), '<p id="x">x</p>')
     _write(os.path.join(site, 'sub', 'index.html'), '<a href="../b.html">b</a>')
     assert _link_checker().broken_links(site) == []
+
+
+def _internal_actions():
+    """The concrete internal actions of jason_lib's package rason: classes that extend Jason's
+    DefaultInternalAction, directly or through the package's own abstract ones."""
+    import re
+    folder = os.path.join(ROOT, 'jason_lib', 'src', 'main', 'java', 'rason')
+    parents, abstract = {}, set()
+    for name in os.listdir(folder):
+        if name.endswith('.java'):
+            with open(os.path.join(folder, name), encoding='utf-8') as f:
+                for modifiers, cls, parent in re.findall(r'^((?:public |abstract |final )*)class (\w+) extends ([\w.]+)',
+                                                         f.read(), re.M):
+                    parents[cls] = parent.split('.')[-1]
+                    if 'abstract' in modifiers:
+                        abstract.add(cls)
+
+    def is_action(cls):
+        while cls in parents:
+            cls = parents[cls]
+            if cls == 'DefaultInternalAction':
+                return True
+        return False
+    return sorted(c for c in parents if is_action(c) and c not in abstract)
+
+
+def test_the_internal_actions_page_lists_every_internal_action_rason_adds():
+    import re
+    actions = _internal_actions()
+    assert {'time_ms', 'perceive_only'} <= set(actions), actions
+    with open(os.path.join(ROOT, 'docs', 'reference', 'internal-actions.md'), encoding='utf-8') as f:
+        listed = set(re.findall(r'`rason\.([a-z]\w*)', f.read()))
+    assert listed == set(actions), 'docs/reference/internal-actions.md lists %s, jason_lib has %s' % (
+        sorted(listed), actions)
+
+
+def test_the_messages_page_includes_every_message_and_service_file():
+    folder = os.path.join(ROOT, 'src', 'rason_msgs')
+    files = ['src/rason_msgs/%s/%s' % (kind, name) for kind in ('msg', 'srv')
+             for name in sorted(os.listdir(os.path.join(folder, kind)))]
+    assert len(files) >= 10, files
+    with open(os.path.join(ROOT, 'docs', 'reference', 'messages.md'), encoding='utf-8') as f:
+        page = f.read()
+    with open(os.path.join(folder, 'README.md'), encoding='utf-8') as f:
+        readme = f.read()
+    assert [p for p in files if '--8<-- "%s"' % p not in page] == [], 'not included in docs/reference/messages.md'
+    assert [p for p in files if p.split('/', 2)[2] not in readme] == [], 'not in src/rason_msgs/README.md'

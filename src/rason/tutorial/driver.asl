@@ -34,5 +34,4 @@
       !halt.
 +!halt : pos(X, Y)
    <- .print("stopped at ", X, " ", Y);
-      .wait(1000);     // so that jason/mind (every 0.5 s) shows the state it ends in
-      .stopMAS.
+      .stopMAS.        // jason/mind's last message is the state the agent ends in

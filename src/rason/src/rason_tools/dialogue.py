@@ -1,10 +1,16 @@
 """One line per agent message or diagnosis, for people watching a run (rason_dialogue)."""
 
 BROADCAST = 'all'
+#: The receiving process's acknowledgement of a message (rason.messaging.Receipts): the fleet's
+#: bookkeeping, not something an agent said.
+RECEIPT = 'rason_receipt'
 
 
 def format_message(sender, receiver, performative, content, in_reply_to=''):
-    """``faulty -> all: achieve helpme``; replies to askOne/askAll are marked as such."""
+    """``faulty -> all: achieve helpme``; replies to askOne/askAll are marked as such; None for
+    a receipt."""
+    if performative == RECEIPT:
+        return None
     reply = ' (reply)' if in_reply_to else ''
     return '%s -> %s: %s %s%s' % (sender, receiver or BROADCAST, performative, content, reply)
 

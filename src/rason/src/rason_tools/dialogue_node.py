@@ -16,8 +16,9 @@ def main():
     printed = set()
 
     def on_message(msg):
-        rospy.loginfo(format_message(msg.sender, msg.receiver, msg.performative, msg.content,
-                                     msg.in_reply_to))
+        line = format_message(msg.sender, msg.receiver, msg.performative, msg.content, msg.in_reply_to)
+        if line is not None:
+            rospy.loginfo(line)
 
     def on_diagnostics(msg):
         # diagnosis_reporter repeats its status every period; print each one once.

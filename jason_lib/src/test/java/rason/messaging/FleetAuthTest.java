@@ -208,8 +208,9 @@ class FleetAuthTest {
         Signed s = stranger.sign(m);
         Refusal r = receiver.verify(m, s);
         assertEquals(Problem.UNKNOWN_KEY, problem(r));
-        assertTrue(r.text().startsWith("unknown key: signed with key '" + keysB.signing().id() + "', which is not in"),
-                r.text());
+        // what both robots log when their key files differ: the two keys and what to do
+        assertEquals("unknown key: signed with key '" + keysB.signing().id() + "', which is not in this robot's fleet keys "
+                + keysA.ids() + ": the robots' key files differ (put the same file on both; docs: Security)", r.text());
         Signed guessed = new Signed(s.incarnation(), s.sequence(), s.stamp(), keysA.signing().id(), s.mac());
         assertEquals(Problem.BAD_MAC, problem(receiver.verify(m, guessed)));
     }
