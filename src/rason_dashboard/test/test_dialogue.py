@@ -27,6 +27,7 @@ def test_the_case_studys_steps_and_anything_else():
     assert step(m('faulty', 'helper', 'tell', 'acceptProposal(reach(faulty,1,0))')) == 'award'
     assert step(m('a', 'b', 'tell', 'seenAt(1,2,3)')) == 'other'
     assert step(m('a', 'b', 'achieve', 'propose(x)')) == 'other'  # the performative counts too
+    assert step(m('faulty', 'helper', 'rason_receipt', 'delivered')) == 'receipt'
 
 
 def test_an_accepted_award_makes_a_helper_until_released():

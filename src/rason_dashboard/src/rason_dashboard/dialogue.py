@@ -33,8 +33,15 @@ def functor(content):
     return content.split('(', 1)[0].strip()
 
 
+#: The performative of Rason's delivery receipts (a robot's "got it" for a message sent).
+RECEIPT = 'rason_receipt'
+
+
 def step(message):
-    """The dialogue step of a message record: call, bid, refuse, award, accept, decline, end or other."""
+    """The dialogue step of a message record: call, bid, refuse, award, accept, decline, end,
+    receipt (a delivery receipt, no step of any dialogue) or other."""
+    if message['performative'] == RECEIPT:
+        return 'receipt'
     return STEPS.get((message['performative'], functor(message['content'])), 'other')
 
 
