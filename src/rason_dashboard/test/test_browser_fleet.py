@@ -12,6 +12,7 @@ from browser import attributes, chromium, set_slider, texts, wait_until  # noqa:
 from dashboard_data import FLEET_DIALOGUE, case_study_bag, fleet_bag  # noqa: E402
 from rason_dashboard.replay import load_bag  # noqa: E402
 from rason_dashboard.server import DashboardServer  # noqa: E402
+from rason_dashboard.timeline import Timeline  # noqa: E402
 
 
 def served(path):
@@ -82,6 +83,37 @@ def test_the_case_studys_two_robots_without_poses(tmp_path):
         assert arrows(driver) == [('faulty', 'helper', 'call'), ('helper', 'faulty', 'accept')]
         assert texts(driver, '#map .empty') == ['no poses (/<robot>/true_pose, /<robot>/odom)']
         assert texts(driver, '#helps li') == ['helper helps faulty (found(faulty))']
+    finally:
+        driver.quit()
+        server.stop()
+
+
+def newest_row_in_sight(driver):
+    return driver.execute_script(
+        "const box = document.getElementById('sequence').getBoundingClientRect();"
+        "const rows = document.querySelectorAll('svg.sequence .msg');"
+        "if (!rows.length) return null;"
+        "const last = rows[rows.length - 1].getBoundingClientRect();"
+        "return [rows.length, last.top >= box.top && last.bottom <= box.bottom];")
+
+
+def test_live_a_long_dialogue_keeps_its_newest_message_in_sight():
+    timeline = Timeline('live')
+
+    def say(i):
+        timeline.add_message(float(i), {'sender': 'r%d' % (1 + i % 2), 'receiver': 'r%d' % (2 - i % 2),
+                                        'performative': 'tell', 'content': 'n(%d)' % i, 'sender_mas': '',
+                                        'line': 'n(%d)' % i})
+    for i in range(40):  # more rows than the diagram's box shows
+        say(i)
+    server = DashboardServer(timeline, '127.0.0.1', 0).start()
+    driver = chromium()
+    try:
+        driver.get(server.url)
+        wait_until(driver, lambda d: newest_row_in_sight(d) == [40, True])
+        say(40)  # the page polls: the new message comes into sight
+        wait_until(driver, lambda d: newest_row_in_sight(d) == [41, True])
+        assert driver.execute_script("return document.getElementById('sequence').scrollTop;") > 0
     finally:
         driver.quit()
         server.stop()

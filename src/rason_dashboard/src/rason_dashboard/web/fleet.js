@@ -112,9 +112,12 @@ function drawFleet(view) {
     el('li', { class: 'helping' }, h.helper + ' helps ' + h.helped + ' (' + h.content + ')')));
   document.getElementById('stacks').replaceChildren(...intentionStacks(view));
   const seq = document.getElementById('sequence');
+  // the newest message is at the bottom: stay there unless the user scrolled up to read
+  const atBottom = seq.scrollTop + seq.clientHeight >= seq.scrollHeight - 8;
   if (view.sequence.rows.length) {
     const parts = [drawSequence(view.sequence)];
     if (view.sequence.left_out) parts.unshift(el('p', { class: 'empty' }, view.sequence.left_out + ' earlier messages not drawn'));
     seq.replaceChildren(...parts);
   } else seq.replaceChildren(el('p', { class: 'empty' }, 'no messages between robots yet'));
+  if (atBottom) seq.scrollTop = seq.scrollHeight;
 }
