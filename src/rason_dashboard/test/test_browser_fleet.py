@@ -44,7 +44,10 @@ def test_map_has_the_four_robots_and_the_diagram_the_contract_net(fleet):
     set_slider(fleet, 0.5)  # 5 s: r1 took the award and drives towards r4
     wait_until(fleet, lambda d: attributes(d, 'svg.map .help', 'data-helper') == ['r1'])
     assert attributes(fleet, 'svg.map .help', 'data-helped') == ['r4']
-    assert sorted(attributes(fleet, 'svg.map .robot-mark', 'data-robot')) == ['r1', 'r2', 'r3', 'r4']
+    assert sorted(attributes(fleet, 'svg.map .robot-mark', 'data-map-robot')) == ['r1', 'r2', 'r3', 'r4']
+    # the pictures name nothing as the cards do: the cards' robots and agents are found as before
+    assert attributes(fleet, '[data-robot]', 'data-robot') == ['/r%d/rason_mas' % k for k in range(1, 5)]
+    assert attributes(fleet, '[data-agent]', 'data-agent') == ['r1', 'r2', 'r3', 'r4']
     assert len(texts(fleet, 'svg.map .robot-mark .true')) == 4
     assert len(fleet.find_elements('css selector', 'svg.map .robot-mark .believed circle')) == 4
     assert attributes(fleet, 'svg.sequence .lane', 'data-lane') == ['r1', 'r2', 'r3', 'r4']
@@ -61,7 +64,7 @@ def test_map_has_the_four_robots_and_the_diagram_the_contract_net(fleet):
 
 def test_the_slider_moves_the_robots_and_ends_the_help(fleet):
     def r1_x(d):
-        return d.execute_script("const c = document.querySelector('svg.map [data-robot=r1] .true circle');"
+        return d.execute_script("const c = document.querySelector('svg.map [data-map-robot=r1] .true circle');"
                                 "return c ? Number(c.getAttribute('cx')) : null;")
     set_slider(fleet, 0.2)  # 2 s: r4's call is out, no award yet
     wait_until(fleet, lambda d: len(arrows(d)) == 9)

@@ -67,7 +67,7 @@ function drawMap(map, colours) {
   }
   for (const r of map.robots) {
     const colour = colours(r.name);
-    const g = svg('g', { class: 'robot-mark', 'data-robot': r.name, style: 'color:' + colour });
+    const g = svg('g', { class: 'robot-mark', 'data-map-robot': r.name, style: 'color:' + colour });
     if (r.believed) {
       const b = r.believed;
       g.append(svg('g', { class: 'believed' + (b.frame ? ' odom-frame' : '') },
@@ -90,7 +90,7 @@ function intentionStacks(view) {
   // every agent's intentions, each stack innermost first, as in the cards but all together
   const rows = [];
   for (const r of view.robots) for (const a of r.agents) {
-    const stacks = a.intentions.map(i => el('li', { class: 'stack', 'data-intention': i.id },
+    const stacks = a.intentions.map(i => el('li', { class: 'stack', 'data-stack-intention': i.id },
       el('span', { class: 'state ' + i.state }, '#' + i.id + ' ' + i.state),
       el('ol', {}, ...i.plans.map(p => el('li', { class: 'frame', title: p }, p)))));
     rows.push(el('div', { class: 'stacks', 'data-stack-agent': a.name }, el('h4', {}, a.name, count(a.intentions.length)),
