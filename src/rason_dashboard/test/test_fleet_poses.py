@@ -60,3 +60,11 @@ def test_poses_thinned_and_none_before_the_first():
     kept = [poses.at(k * 0.02)['r1']['true']['x'] for k in range(50)]
     assert len(set(kept)) == pytest.approx(1.0 / fp.POSE_PERIOD, abs=1)
     assert poses.at(-1.0) == {} and FleetPoses().bounds() is None
+
+
+def test_a_pose_that_is_not_finite_is_left_out():
+    poses = FleetPoses()
+    assert poses.add(0.0, 'true', 'r1', pose(1, 0)) is True
+    assert poses.add(1.0, 'true', 'r1', pose(float('nan'), 0)) is False
+    assert poses.add(2.0, 'odom', 'r1', pose(0, 0, float('inf'))) is False
+    assert poses.at(None) == {'r1': {'true': pose(1, 0), 'believed': None}}

@@ -1,5 +1,7 @@
 """Every robot's poses as time goes, and at any time its true pose and the pose it believes
 it is at (its odometry placed in the world). Not thread-safe: the Timeline holds its lock."""
+import math
+
 from rason_dashboard.poses import anchor, compose
 from rason_dashboard.series import Series
 
@@ -20,18 +22,23 @@ class FleetPoses(object):
         self._box = None    # [min x, min y, max x, max y] of every pose placed in the world
 
     def add(self, t, kind, robot, pose):
+        """Keeps pose (unless one of the same kind came less than POSE_PERIOD before); False
+        when it is not finite (left out: it has no place on a map, nor in JSON)."""
+        if not all(math.isfinite(pose[k]) for k in ('x', 'y', 'yaw')):
+            return False
         key = (robot, kind)
         self._latest[key] = pose
         if robot not in self._anchors and (robot, 'true') in self._latest and (robot, 'odom') in self._latest:
             self._anchors[robot] = anchor(self._latest[(robot, 'true')], self._latest[(robot, 'odom')])
         last = self._last.get(key)
         if kind != 'origin' and last is not None and abs(t - last) < POSE_PERIOD:
-            return
+            return True
         self._last[key] = t
         self._series.setdefault(key, Series(MAX_POSES)).add(t, pose)
         world = pose if kind == 'true' else self._believed(robot, pose, None) if kind == 'odom' else None
         if world is not None:
             self._grow(world)
+        return True
 
     def _origin(self, robot, t):
         series = self._series.get((robot, 'origin'))

@@ -61,4 +61,5 @@ class LiveFeed(object):
         kind, topic = kind_topic
         t = self._now()
         for robot, pose in pose_records(kind, topic, msg):
-            self._timeline.add_pose(t, kind, robot, pose)
+            if not self._timeline.add_pose(t, kind, robot, pose):
+                rospy.logwarn_throttle(10, 'dashboard: a pose on %s is not finite: left out' % topic)

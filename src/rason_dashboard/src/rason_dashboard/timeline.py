@@ -43,9 +43,9 @@ class Timeline(object):
 
     def add_pose(self, t, kind, robot, pose):
         """A robot's pose: kind 'true' (ground truth), 'odom' (its odometry) or 'origin' (where
-        its odometry frame is in the world)."""
+        its odometry frame is in the world). False when the pose is not finite (left out)."""
         with self._lock:
-            self._poses.add(t, kind, robot, pose)
+            return self._poses.add(t, kind, robot, pose)
 
     def span(self):
         """(first, last) time of anything added, or None while empty."""
