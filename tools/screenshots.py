@@ -4,6 +4,9 @@ tests' driver) and saved as small palette PNGs:
 
   tools/screenshots.py dashboard BAG OUT.png [--at FRACTION] [--open-rules]
       the dashboard replaying BAG, its time slider at FRACTION of the run (0 start, 1 end)
+  tools/screenshots.py fleet BAG OUT.png [--at FRACTION]
+      writes the dashboard tests' four-robot fleet bag (a contract net, poses) to BAG, then as
+      dashboard
   tools/screenshots.py page FILE.html OUT.png
       a page of the built docs site (make docs: build/site/...), opened from its file URL
 
@@ -57,6 +60,12 @@ def dashboard(args):
         server.stop()
 
 
+def fleet(args):
+    from dashboard_data import fleet_bag
+    fleet_bag(args.source)
+    dashboard(args)
+
+
 def page(args):
     from browser import chromium
     driver = chromium()
@@ -70,7 +79,7 @@ def page(args):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument('kind', choices=['dashboard', 'page'])
+    p.add_argument('kind', choices=['dashboard', 'fleet', 'page'])
     p.add_argument('source', help='the bag (dashboard) or the .html file (page)')
     p.add_argument('out')
     p.add_argument('--at', type=float, default=1.0, help='dashboard: slider position, 0 to 1')
@@ -78,7 +87,7 @@ def main():
     p.add_argument('--width', type=int, default=1400)
     p.add_argument('--height', type=int, default=900)
     args = p.parse_args()
-    (dashboard if args.kind == 'dashboard' else page)(args)
+    {'dashboard': dashboard, 'fleet': fleet, 'page': page}[args.kind](args)
 
 
 if __name__ == '__main__':

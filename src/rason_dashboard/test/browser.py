@@ -23,10 +23,11 @@ def chromium():
 
 
 def texts(driver, css):
-    """The rendered text of every element matching css, read in one go (the page redraws
-    whole parts, so elements found one call earlier may be gone)."""
+    """The rendered text of every element matching css (an SVG element's text content), read
+    in one go (the page redraws whole parts, so elements found one call earlier may be gone)."""
     return driver.execute_script(
-        'return Array.from(document.querySelectorAll(arguments[0])).map(e => e.innerText.trim());', css)
+        'return Array.from(document.querySelectorAll(arguments[0])).map(e => (e.innerText ?? e.textContent).trim());',
+        css)
 
 
 def attributes(driver, css, name):

@@ -9,7 +9,7 @@ import pytest
 import rosbag
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from dashboard_data import case_study_bag, diagnosis, message, mind  # noqa: E402
+from dashboard_data import FLEET_STARTS, case_study_bag, diagnosis, fleet_bag, message, mind  # noqa: E402
 from rason_dashboard.replay import load_bag, load_bags, merge_runs  # noqa: E402
 
 
@@ -22,7 +22,7 @@ def bag(tmp_path):
 
 def test_counts_and_span(bag):
     timeline, counts = load_bag(bag)
-    assert counts == {'minds': 3, 'messages': 2, 'statuses': 1}
+    assert counts == {'minds': 3, 'messages': 2, 'statuses': 1, 'poses': 0}
     assert timeline.mode == 'replay' and timeline.span() == pytest.approx((100.0, 109.0))
 
 
@@ -76,7 +76,7 @@ def _host_bags(tmp_path, helper_offset=0.05):
 def test_bags_of_two_hosts_replay_as_one_run_with_each_message_once(tmp_path):
     faulty_bag, helper_bag = _host_bags(tmp_path)
     timeline, counts = load_bags([faulty_bag, helper_bag])
-    assert counts == {'minds': 3, 'messages': 2, 'statuses': 1}
+    assert counts == {'minds': 3, 'messages': 2, 'statuses': 1, 'poses': 0}
     end = timeline.view()
     assert [r['mas_id'] for r in end['robots']] == ['/faulty/rason_mas', '/helper/rason_mas']
     assert [m['line'] for m in end['messages']] == ['faulty -> all: achieve helpme', 'helper -> faulty: tell found(faulty)']
@@ -101,3 +101,18 @@ def test_messages_repeated_in_one_bag_or_far_apart_are_not_merged(tmp_path):
     twice = records + [('message', 1.2, dict(records[0][2]))]
     assert len(merge_runs([twice, records])) == 2   # the second bag's copy matches one of the two
     assert len(merge_runs([twice])) == 2
+
+
+def test_a_fleet_bag_has_every_robots_poses_and_who_helps_whom(tmp_path):
+    path = str(tmp_path / 'fleet.bag')
+    fleet_bag(path, t0=200.0)
+    timeline, counts = load_bag(path)
+    assert counts['minds'] == 4 and counts['messages'] == 10
+    assert counts['poses'] == 4 * 2 * 101 + 4  # true and odometry at 10 Hz for 10 s, /tf_static
+    before, during, after = timeline.view(202.0), timeline.view(205.0), timeline.view()
+    assert before['helps'] == [] and after['helps'] == []  # awarded at 2.5 s, released at 9 s
+    assert [(h['helper'], h['helped']) for h in during['helps']] == [('r1', 'r4')]
+    assert sorted(during['poses']) == sorted(FLEET_STARTS)
+    r1 = after['poses']['r1']
+    assert (r1['true']['x'], r1['true']['y']) == pytest.approx((1.0, 0.0), abs=1e-3)  # drove 1 m to r4's side
+    assert (r1['believed']['x'], r1['believed']['y']) == pytest.approx((0.9, 0.0), abs=1e-3)  # odometry 10 % long

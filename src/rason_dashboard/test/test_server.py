@@ -12,8 +12,12 @@ from rason_dashboard.timeline import Timeline
 @pytest.fixture
 def served():
     timeline = Timeline('replay')
-    timeline.add_message(1.0, {'line': 'faulty -> all: achieve helpme'})
-    timeline.add_message(2.0, {'line': 'helper -> faulty: tell found(faulty)'})
+    timeline.add_message(1.0, {'sender': 'faulty', 'receiver': 'all', 'performative': 'achieve',
+                               'content': 'helpme', 'sender_mas': '/faulty/rason_mas',
+                               'line': 'faulty -> all: achieve helpme'})
+    timeline.add_message(2.0, {'sender': 'helper', 'receiver': 'faulty', 'performative': 'tell',
+                               'content': 'found(faulty)', 'sender_mas': '/helper/rason_mas',
+                               'line': 'helper -> faulty: tell found(faulty)'})
     server = DashboardServer(timeline, '127.0.0.1', 0).start()
     yield server.url
     server.stop()

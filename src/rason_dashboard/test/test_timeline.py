@@ -10,6 +10,11 @@ def robot(mas_id, stamp, belief, started=None):
         'actions': actions, 'events': [], 'messages': [], 'omitted': 0}]}
 
 
+def msg(line):
+    return {'sender': 'a', 'receiver': 'b', 'performative': 'tell', 'content': line, 'sender_mas': '/a/m',
+            'line': line}
+
+
 def test_view_at_a_time_shows_each_robot_as_it_was_then():
     t = Timeline('replay')
     t.add_mind(10.0, robot('/r1', 10.0, 'early'))
@@ -25,9 +30,9 @@ def test_view_at_a_time_shows_each_robot_as_it_was_then():
 
 def test_input_out_of_order_is_put_in_time_order():
     t = Timeline()
-    t.add_message(3.0, {'line': 'c'})
-    t.add_message(1.0, {'line': 'a'})
-    t.add_message(2.0, {'line': 'b'})
+    t.add_message(3.0, msg('c'))
+    t.add_message(1.0, msg('a'))
+    t.add_message(2.0, msg('b'))
     assert [m['line'] for m in t.view()['messages']] == ['a', 'b', 'c']
     assert [m['line'] for m in t.view(2.5)['messages']] == ['a', 'b']
     assert t.view(2.5)['messages'][-1]['time'] == 2.0
@@ -54,7 +59,7 @@ def test_bounded_oldest_dropped(monkeypatch):
     monkeypatch.setattr(tl, 'VIEW_MESSAGES', 2)
     t = Timeline()
     for i in range(5):
-        t.add_message(float(i), {'line': str(i)})
+        t.add_message(float(i), msg(str(i)))
     assert [m['line'] for m in t.view()['messages']] == ['3', '4']
     assert t.span() == (2.0, 4.0)
 

@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """The dashboard in headless Chromium during a case-study run: three robots' agents side by
 side (faulty, helper and a third robot), a belief, an intention, the dialogue and the
-diagnosis; then the run's bag, replayed in the dashboard, shows the same dialogue and
-diagnosis as the live page did."""
+diagnosis, the two simulated robots on the map and Faulty's call as arrows of the sequence
+diagram; then the run's bag, replayed in the dashboard, shows the same dialogue, diagnosis and
+robots on the map as the live page did."""
 import os
 import sys
 import time
@@ -42,6 +43,20 @@ def dialogue(driver):
     return attributes(driver, '.dialogue', 'data-line')
 
 
+def map_robots(driver):
+    """The robots on the page's map, each with its true and its believed pose drawn or not."""
+    return driver.execute_script(
+        "return Array.from(document.querySelectorAll('svg.map .robot-mark')).map(g => "
+        "[g.dataset.mapRobot, !!g.querySelector('.true'), !!g.querySelector('.believed')]).sort();")
+
+
+def arrows(driver):
+    """(sender, receiver, step) of the sequence diagram's arrows."""
+    return [tuple(a) for a in driver.execute_script(
+        "return Array.from(document.querySelectorAll('svg.sequence .msg .arrow')).map("
+        "a => [a.closest('.msg').dataset.from, a.dataset.to, a.closest('.msg').dataset.step]);")]
+
+
 class TestDashboardLive(unittest.TestCase):
 
     def test_live_then_replayed(self):
@@ -62,6 +77,8 @@ class TestDashboardLive(unittest.TestCase):
         self.assertEqual(sorted(attributes(driver, '[data-robot]', 'data-robot')),
                          ['/faulty/rason_mas', '/helper/rason_mas', '/third/rason_mas'])
         self.assertIn('charge(90)[source(self)]', texts(driver, '[data-agent=third_courier] .belief'))
+        # the simulator's two robots on the map, true pose and odometry; the third has no body
+        wait_until(driver, lambda d: map_robots(d) == [['faulty', True, True], ['helper', True, True]], timeout=30)
         # an intention that lasts (the helper's come and go in seconds; they are checked in the replay)
         wait_until(driver, lambda d: any('awaitParcel' in p for p in texts(d, '[data-agent=third_courier] .plan')),
                    timeout=30)
@@ -72,6 +89,10 @@ class TestDashboardLive(unittest.TestCase):
         live_dialogue = dialogue(driver)
         live_diagnosis = texts(driver, '[data-status="rason/diagnosis"]')
         self.assertIn('faulty -> all: achieve helpme', live_dialogue)
+        live_arrows = arrows(driver)  # the broadcast: an arrow to every other agent's lane
+        self.assertIn(('faulty', 'helper', 'call'), live_arrows)
+        self.assertIn(('faulty', 'third_courier', 'call'), live_arrows)
+        self.assertIn(('helper', 'faulty', 'accept'), live_arrows)
 
         # the bag: closed when its recorder stops
         bag = rospy.get_param('~bag')
@@ -90,6 +111,7 @@ class TestDashboardLive(unittest.TestCase):
         # the same lines; two sent by different robots milliseconds apart (the helper's
         # feedback, Faulty's thanks) may reach the recorder and the dashboard in either order
         self.assertCountEqual(dialogue(driver), live_dialogue)
+        self.assertEqual(map_robots(driver), [['faulty', True, True], ['helper', True, True]])
         # back to when the helper searched for Faulty: its plan is on the page
         searching = first_time(timeline, lambda view: any(
             'findRobot' in plan for plan in plans(view, 'helper')))

@@ -35,8 +35,9 @@ def replay(argv):
         server = DashboardServer(timeline, args.bind, args.port).start()
     except OSError as e:
         sys.exit('dashboard: cannot serve on %s:%d: %s' % (args.bind, args.port, e))
-    print('dashboard: replaying %s (%d mind states, %d messages, %d statuses) on %s'
-          % (bags, counts['minds'], counts['messages'], counts['statuses'], server.url), flush=True)
+    print('dashboard: replaying %s (%d mind states, %d messages, %d statuses, %d poses) on %s'
+          % (bags, counts['minds'], counts['messages'], counts['statuses'], counts['poses'], server.url),
+          flush=True)
     try:
         server.wait()
     except KeyboardInterrupt:

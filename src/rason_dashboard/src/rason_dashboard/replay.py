@@ -1,5 +1,6 @@
-"""Recorded bags as a Timeline: jason/mind, the messages between robots and the rason/*
-statuses of /diagnostics, each at the time it was recorded. Reads the bags only: nothing is
+"""Recorded bags as a Timeline: jason/mind, the messages between robots, the rason/*
+statuses of /diagnostics and the robots' poses (true_pose, odom, /tf_static), each at the time
+it was recorded. Reads the bags only: nothing is
 published, so replaying never reaches live agents.
 
 Several bags are one run when each robot recorded on its own master (robots on hosts of their
@@ -8,6 +9,7 @@ What two bags both hold (one master recorded twice, a message seen by both robot
 once."""
 import rosbag
 
+from rason_dashboard.poses import pose_records, pose_topic_kind
 from rason_dashboard.records import message_record, mind_record, status_records
 from rason_dashboard.timeline import Timeline
 
@@ -20,15 +22,21 @@ SAME_RECORD_WINDOW = 1.0
 
 def read_bag(path):
     """The dashboard's records of one bag, in recorded order: a list of (kind, time, record),
-    kind 'mind', 'message' or 'status'. IOError/ROSBagException if it cannot be read."""
+    kind 'mind', 'message', 'status' or 'pose' (a record (pose kind, robot, pose)).
+    IOError/ROSBagException if it cannot be read."""
     records = []
     with rosbag.Bag(path) as bag:
         topics = bag.get_type_and_topic_info().topics
-        wanted = [t for t, info in topics.items() if info.msg_type in (MIND_TYPE, MESSAGE_TYPE, DIAGNOSTICS_TYPE)]
+        poses = {t: pose_topic_kind(t, info.msg_type) for t, info in topics.items()}
+        wanted = [t for t, info in topics.items()
+                  if info.msg_type in (MIND_TYPE, MESSAGE_TYPE, DIAGNOSTICS_TYPE) or poses[t]]
         for topic, msg, stamp in bag.read_messages(topics=wanted):
             t = stamp.to_sec()
             kind = topics[topic].msg_type
-            if kind == MIND_TYPE:
+            if poses[topic]:
+                records.extend(('pose', t, (poses[topic], robot, pose))
+                               for robot, pose in pose_records(poses[topic], topic, msg))
+            elif kind == MIND_TYPE:
                 records.append(('mind', t, mind_record(msg)))
             elif kind == MESSAGE_TYPE:
                 records.append(('message', t, message_record(msg)))
@@ -38,6 +46,9 @@ def read_bag(path):
 
 
 def _key(kind, record):
+    if kind == 'pose':
+        pose_kind, robot, pose = record
+        return kind, pose_kind, robot, pose['x'], pose['y'], pose['yaw']
     if kind == 'mind':
         return kind, record['mas_id'], record['stamp']
     if kind == 'message':
@@ -71,9 +82,10 @@ def load_bags(paths):
     """The Timeline of one or more bags of a run; IOError/ROSBagException if one cannot be read.
     Returns (timeline, counts)."""
     timeline = Timeline(mode='replay')
-    counts = {'minds': 0, 'messages': 0, 'statuses': 0}
+    counts = {'minds': 0, 'messages': 0, 'statuses': 0, 'poses': 0}
     adders = {'mind': (timeline.add_mind, 'minds'), 'message': (timeline.add_message, 'messages'),
-              'status': (timeline.add_status, 'statuses')}
+              'status': (timeline.add_status, 'statuses'),
+              'pose': (lambda t, r: timeline.add_pose(t, *r), 'poses')}
     for kind, t, record in merge_runs([read_bag(p) for p in paths]):
         add, count = adders[kind]
         add(t, record)

@@ -1,5 +1,5 @@
 """The dashboard's web server (Python's own http.server): the page and its script from
-web/, and the view of a Timeline as JSON at /api/view?t=SECONDS. Read-only: nothing a
+web/, and the view of a Timeline with its pictures laid out as JSON at /api/view?t=SECONDS. Read-only: nothing a
 browser sends reaches ROS or the agents."""
 import json
 import math
@@ -8,10 +8,13 @@ import threading
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from urllib.parse import parse_qs, urlparse
 
+from rason_dashboard.pictures import with_pictures
+
 WEB = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'web')
 #: The files served, by path: nothing else of the disk is reachable.
 FILES = {'/': ('index.html', 'text/html; charset=utf-8'),
          '/app.js': ('app.js', 'text/javascript; charset=utf-8'),
+         '/fleet.js': ('fleet.js', 'text/javascript; charset=utf-8'),
          '/style.css': ('style.css', 'text/css; charset=utf-8')}
 
 
@@ -44,7 +47,7 @@ def make_handler(timeline, log=None):
                     t = parse_time(url.query)
                 except BadRequest as e:
                     return self._send(400, 'text/plain; charset=utf-8', str(e).encode())
-                body = json.dumps(timeline.view(t)).encode()
+                body = json.dumps(with_pictures(timeline.view(t))).encode()
                 return self._send(200, 'application/json', body)
             if url.path in FILES:
                 name, kind = FILES[url.path]

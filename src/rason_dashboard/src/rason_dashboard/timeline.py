@@ -1,11 +1,14 @@
 """What the dashboard shows, as time goes: each robot's agents (jason/mind), the messages
-between robots and the rason/* statuses of /diagnostics, and the view at any time. No rospy:
-the live node and the bag replay fill it the same way, with ROS time in seconds. Each robot in
-a view carries what changed since its snapshot before (:mod:`rason_dashboard.changes`)."""
-import bisect
+between robots, the rason/* statuses of /diagnostics and the robots' poses, and the view at
+any time (with who helps whom, from the messages so far). No rospy: the live node and the bag
+replay fill it the same way, with ROS time in seconds. Each robot in a view carries what
+changed since its snapshot before (:mod:`rason_dashboard.changes`)."""
 import threading
 
 from rason_dashboard.changes import robot_changes
+from rason_dashboard.dialogue import helping
+from rason_dashboard.fleet_poses import FleetPoses
+from rason_dashboard.series import Series
 
 #: How many entries of each kind a live timeline keeps (the oldest go first).
 MAX_MINDS_PER_ROBOT = 5000
@@ -15,54 +18,20 @@ MAX_STATUSES = 2000
 VIEW_MESSAGES = 200
 
 
-class _Series(object):
-    """(time, item) pairs in time order, bounded; the item at or before a time."""
-
-    def __init__(self, limit):
-        self._times = []
-        self._items = []
-        self._limit = limit
-
-    def add(self, t, item):
-        i = bisect.bisect_right(self._times, t)  # in time order even when input is not
-        self._times.insert(i, t)
-        self._items.insert(i, item)
-        if len(self._times) > self._limit:
-            del self._times[0]
-            del self._items[0]
-
-    def at(self, t):
-        """The newest item at or before t (None: the newest of all), or None."""
-        i = len(self._times) if t is None else bisect.bisect_right(self._times, t)
-        return self._items[i - 1] if i else None
-
-    def at_and_before(self, t):
-        """The newest item at or before t (None: the newest of all) and the one before it (or None)."""
-        i = len(self._times) if t is None else bisect.bisect_right(self._times, t)
-        return (self._items[i - 1] if i else None), (self._items[i - 2] if i > 1 else None)
-
-    def upto(self, t, n):
-        """The last n (time, item) pairs at or before t (None: the newest)."""
-        i = len(self._times) if t is None else bisect.bisect_right(self._times, t)
-        return list(zip(self._times[max(0, i - n):i], self._items[max(0, i - n):i]))
-
-    def span(self):
-        return (self._times[0], self._times[-1]) if self._times else None
-
-
 class Timeline(object):
     """Thread-safe: ROS callbacks add, the web server's threads read."""
 
     def __init__(self, mode='live'):
         self.mode = mode
         self._lock = threading.Lock()
-        self._minds = {}     # mas_id -> _Series of mind records
-        self._messages = _Series(MAX_MESSAGES)
-        self._statuses = {}  # status name -> _Series of status records
+        self._minds = {}     # mas_id -> Series of mind records
+        self._messages = Series(MAX_MESSAGES)
+        self._statuses = {}  # status name -> Series of status records
+        self._poses = FleetPoses()
 
     def add_mind(self, t, record):
         with self._lock:
-            self._minds.setdefault(record['mas_id'], _Series(MAX_MINDS_PER_ROBOT)).add(t, record)
+            self._minds.setdefault(record['mas_id'], Series(MAX_MINDS_PER_ROBOT)).add(t, record)
 
     def add_message(self, t, record):
         with self._lock:
@@ -70,7 +39,13 @@ class Timeline(object):
 
     def add_status(self, t, record):
         with self._lock:
-            self._statuses.setdefault(record['name'], _Series(MAX_STATUSES)).add(t, record)
+            self._statuses.setdefault(record['name'], Series(MAX_STATUSES)).add(t, record)
+
+    def add_pose(self, t, kind, robot, pose):
+        """A robot's pose: kind 'true' (ground truth), 'odom' (its odometry) or 'origin' (where
+        its odometry frame is in the world). False when the pose is not finite (left out)."""
+        with self._lock:
+            return self._poses.add(t, kind, robot, pose)
 
     def span(self):
         """(first, last) time of anything added, or None while empty."""
@@ -88,7 +63,9 @@ class Timeline(object):
                 mind, before = self._minds[mas_id].at_and_before(t)
                 if mind is not None:
                     robots.append(_with_ages(robot_changes(before, mind), t))
-            messages = [dict(m, time=mt) for mt, m in self._messages.upto(t, VIEW_MESSAGES)]
+            every_message = [dict(m, time=mt) for mt, m in self._messages.upto(t, MAX_MESSAGES)]
+            messages = every_message[-VIEW_MESSAGES:]
+            poses, bounds = self._poses.at(t), self._poses.bounds()
             statuses = []
             for name in sorted(self._statuses):
                 s = self._statuses[name].at(t)
@@ -97,7 +74,7 @@ class Timeline(object):
         span = self.span()
         return {'mode': self.mode, 'time': t if t is not None else (span[1] if span else None),
                 'span': list(span) if span else None, 'robots': robots, 'messages': messages,
-                'statuses': statuses}
+                'statuses': statuses, 'helps': helping(every_message), 'poses': poses, 'bounds': bounds}
 
 
 def _with_ages(mind, t):

@@ -1,5 +1,5 @@
 // The Rason dashboard page: draws /api/view (every robot's agents, the messages between
-// robots, the rason/* statuses). Live: polls twice a second. Replay: the slider picks the
+// robots, the rason/* statuses; the fleet's pictures with fleet.js). Live: polls twice a second. Replay: the slider picks the
 // time. Everything is drawn with textContent, never as HTML, since agents' text is data.
 'use strict';
 
@@ -99,6 +99,7 @@ function draw(view) {
   }));
   document.getElementById('messages').replaceChildren(...view.messages.map(m =>
     el('li', { class: 'dialogue', 'data-line': m.line }, el('span', { class: 'time' }, m.time.toFixed(2)), m.line)));
+  drawFleet(view);
   document.getElementById('statuses').replaceChildren(...view.statuses.map(s =>
     el('span', { class: 'status ' + s.level, 'data-status': s.name }, s.name + ': ' + s.message)));
   if (view.mode === 'replay' && view.span) {
