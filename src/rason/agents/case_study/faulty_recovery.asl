@@ -95,12 +95,25 @@ curvatureSeen(K)
 +!reach(X, Y) : beingGuided & guidedTries(N) <- !guidedGoto(X, Y, N).
 +!reach(X, Y) <- goto(X, Y).
 
-+!guidedGoto(X, Y, _) <- goto(X, Y).
--!guidedGoto(X, Y, N)[R1 | Rest]
-: N > 1 & .member(no_progress, [R1 | Rest]) & guidedPause(P)
-<- .print("The helper's view of me stopped coming; I try again (", N - 1, " tries left)");
-    .wait(P);
-    !guidedGoto(X, Y, N - 1).
+// A guided goto, tried again while the helper's view of me pauses. A try's failure is caught
+// into a belief: a failure plan that itself fails (or one whose context does not hold) ends
+// the whole intention in Jason, and the mission would never end.
++!guidedGoto(X, Y, N)
+<- !tryGoto(X, Y);
+    if (gotoFailed(Reason)) {
+        -gotoFailed(Reason);
+        if (N > 1 & Reason == no_progress & guidedPause(P)) {
+            .print("The helper's view of me stopped coming; I try again (", N - 1, " tries left)");
+            .wait(P);
+            !guidedGoto(X, Y, N - 1);
+        } else {
+            .print("I give the guided drive up: ", Reason);
+            .fail;
+        }
+    }.
++!tryGoto(X, Y) <- goto(X, Y).
+-!tryGoto(X, Y)[R1 | Rest]
+<- if (.member(no_progress, [R1 | Rest])) { +gotoFailed(no_progress) } else { +gotoFailed(R1) }.
 
 /* Execute: guided by the helper's camera when the encoders fail */
 
