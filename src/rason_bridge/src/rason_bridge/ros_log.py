@@ -44,9 +44,9 @@ def _publish_frames(pub, frames, lines, topics):
                        file='rosout_writer.py', line=0, function='write')
             last.header.stamp = now
             impl.latch = last
-        first, impl.seq = impl.seq + 1, impl.seq + len(lines)
         if not impl.has_connections():
             return
+        first, impl.seq = impl.seq + 1, impl.seq + len(lines)
         data = frames.frames(lines, first, now.secs, now.nsecs, topics or [])
         for c in list(impl.connections):
             try:
