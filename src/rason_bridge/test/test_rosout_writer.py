@@ -29,7 +29,7 @@ def _logger(name, level=logging.INFO):
 
 
 def _writer(logger, published, disabled=lambda: False, clock=lambda: 0.0):
-    return RosoutWriter(logger, ToRosout, lambda level, text, topics, record: published.append((level, text, topics)),
+    return RosoutWriter(logger, ToRosout, lambda lines, topics: published.extend((l, t, topics) for l, t in lines),
                         lambda: ['/rosout', '/jason/action'], disabled, clock)
 
 
@@ -90,3 +90,36 @@ def test_a_failing_parameter_lookup_keeps_the_last_value():
     now[0] = PARAM_PERIOD * 2
     writer.write([('info', 'b')])
     assert [p[2] for p in published] == ['', '']
+
+
+def test_a_file_handler_gets_a_batch_formatted_in_order_at_its_level(tmp_path):
+    import logging.handlers
+    logger = _logger('file')[0]
+    path = tmp_path / 'node.log'
+    handler = logging.handlers.RotatingFileHandler(str(path))
+    handler.setFormatter(logging.Formatter('%(levelname)s %(message)s'))
+    handler.setLevel(logging.WARNING)
+    logger.addHandler(handler)
+    try:
+        _writer(logger, []).write([('info', 'a'), ('warn', 'b'), ('error', 'c\nd')])
+        assert path.read_text() == 'WARNING b\nERROR c\nd\n'
+    finally:
+        logger.removeHandler(handler)
+        handler.close()
+
+
+def test_a_rotating_file_rolls_over_before_a_batch_that_would_pass_its_size(tmp_path):
+    import logging.handlers
+    logger = _logger('rotating')[0]
+    path = tmp_path / 'node.log'
+    handler = logging.handlers.RotatingFileHandler(str(path), maxBytes=20, backupCount=1)
+    logger.addHandler(handler)
+    try:
+        writer = _writer(logger, [])
+        writer.write([('info', 'first line')])
+        writer.write([('info', 'second'), ('info', 'third')])
+        assert (tmp_path / 'node.log.1').read_text() == 'first line\n'
+        assert path.read_text() == 'second\nthird\n'
+    finally:
+        logger.removeHandler(handler)
+        handler.close()

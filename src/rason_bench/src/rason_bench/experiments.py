@@ -174,7 +174,13 @@ def latencies(procs, harness, pings, stamps, stamp_period, log):
     return out
 
 
-def node_cpu_per_message(procs, harness, window, log, count=10, rate=50, windows=3, warm=5.0):
+#: Burst before the CPU windows: the JVM's C2 compiler is still compiling the perception path's
+#: large methods (the parser, Jason's belief update and deliberation) 15-25 s into a burst, at
+#: about a third of a core; a node that runs for hours pays that once.
+CPU_WARM_S = 30.0
+
+
+def node_cpu_per_message(procs, harness, window, log, count=10, rate=50, windows=3, warm=CPU_WARM_S):
     """CPU time (user + sys) of the rason_mas process per perception message of a ``count``
     literals x ``rate`` Hz burst, less its idle CPU use: the median of ``windows`` windows of
     ``window`` s, for the Listing 5.4 agent (a plan with a .print per literal) and for an
@@ -183,7 +189,7 @@ def node_cpu_per_message(procs, harness, window, log, count=10, rate=50, windows
     out = {}
     for label, mas2j in (('listing_5_4', 'bench.mas2j'), ('no_plans', 'quiet.mas2j')):
         with Mas(procs, harness, mas2j) as mas:
-            with Burst(procs, harness, count, rate):  # the JIT compiles the perception path
+            with Burst(procs, harness, count, rate):  # the JIT compiles the perception path (CPU_WARM_S)
                 time.sleep(warm)
             time.sleep(1.0)
             idle = [_cpu_window(mas, harness, window)]

@@ -4,9 +4,11 @@ makes an agent wait for Python; no rospy. It takes the queued lines in batches, 
 call into Java, and writes each batch at once."""
 import threading
 
-#: How often the thread looks for queued lines (s), and how many it takes at once.
+#: How long the thread lets lines gather once one is queued (s), and how many it takes at once.
 POLL = 0.02
 BATCH = 500
+#: How long it waits in Java for a line before it looks at its stop flag (ms).
+IDLE_WAIT_MS = 500
 
 #: java.util.logging's levels (SEVERE, WARNING, INFO) -> the level written; below INFO: debug.
 _LEVELS = ((1000, 'error'), (900, 'warn'), (800, 'info'))
@@ -36,7 +38,8 @@ def _ints(array):
 
 class LogPump(object):
     """
-    :param lines: the Java ``LogQueue`` (``drainBatch(max)``, ``takeDropped()``)
+    :param lines: the Java ``LogQueue`` (``drainBatch(max)``, ``takeDropped()``,
+        ``awaitLines(ms)``: parks this thread in Java, without the GIL, until a line comes)
     :param write: ``write([(level_name, text), ...])`` writes lines in order
     """
 
@@ -50,8 +53,8 @@ class LogPump(object):
 
     def _run(self):
         while not self._stop.is_set():
-            if not self.drain():
-                self._stop.wait(POLL)
+            if not self.drain() and self._lines.awaitLines(IDLE_WAIT_MS):
+                self._stop.wait(POLL)  # the lines of the next moments go in the same batch
 
     def close(self, detach):
         """Stop the thread, ``detach()`` Java's queue (it logs to stderr from then on), write what it still holds."""

@@ -2,8 +2,12 @@
 of the ``rosout`` logger and of its ancestors: the screen and the node's log file; and
 /rosout), without rospy's costs per line: its search for the caller's frame, and the
 master's ``/rosout_disable_topics_generation`` parameter, which rospy asks the master for on
-every line while the parameter is unset (its cache keeps no "unset"); no rospy."""
+every line while the parameter is unset (its cache keeps no "unset"); no rospy.
+
+A batch goes to a plain file or stream handler (the node's log file) as one write and one
+flush, and to /rosout as one publication of all its messages."""
 import logging
+import logging.handlers
 import time
 
 #: How long a value of the parameter is used before it is asked again (s).
@@ -19,7 +23,8 @@ class RosoutWriter(object):
         does), the others go to its handlers and, while it propagates, to its ancestors'
     :param rosout_handler: the class of rospy's handler that publishes to /rosout: it is
         skipped, the line published here instead, while the logger has one
-    :param publish: ``publish(level_name, text, topics, record)`` publishes one /rosout message
+    :param publish: ``publish([(level_name, text), ...], topics)`` publishes one /rosout
+        message per line, in order
     :param topics: ``topics()`` -> the node's topics, which a rosout message carries
     :param topics_disabled: ``topics_disabled()`` -> the parameter; asked at most every
         :data:`PARAM_PERIOD` s (then rosout messages carry no topics)
@@ -37,19 +42,23 @@ class RosoutWriter(object):
     def write(self, lines):
         """Writes ``[(level_name, text), ...]`` in order."""
         handlers, to_rosout = self._handlers()
-        topics = None
+        kept, records = [], []
         for level_name, text in lines:
             level = LEVELS[level_name]
-            if not self._logger.isEnabledFor(level):
-                continue
-            record = logging.LogRecord(self._logger.name, level, __file__, 0, text, None, None, 'write')
-            for handler in handlers:
-                if level >= handler.level:
-                    handler.handle(record)
-            if to_rosout:
-                if topics is None:
-                    topics = '' if self._topics_off() else self._topics()
-                self._publish(level_name, text, topics, record)
+            if self._logger.isEnabledFor(level):
+                kept.append((level_name, text))
+                records.append(logging.LogRecord(self._logger.name, level, __file__, 0, text, None, None, 'write'))
+        if not kept:
+            return
+        for handler in handlers:
+            if type(handler) in _BATCHED:
+                _emit_batch(handler, records)
+            else:
+                for record in records:
+                    if record.levelno >= handler.level:
+                        handler.handle(record)
+        if to_rosout:
+            self._publish(kept, '' if self._topics_off() else self._topics())
 
     def _handlers(self):
         handlers, to_rosout, logger = [], False, self._logger
@@ -71,3 +80,41 @@ class RosoutWriter(object):
             except Exception:  # the master is gone: the last value stands
                 pass
         return self._disabled
+
+
+#: Handlers whose emit is a format, a write and a flush (and, rotating, a size check): a batch
+#: is written to them at once. Others get each line on its own.
+_BATCHED = (logging.StreamHandler, logging.FileHandler, logging.handlers.RotatingFileHandler)
+
+
+def _emit_batch(handler, records):
+    """The records a handler would take, written as ``handler.handle`` would, one write for all
+    (a rotating file rolls over before the batch that would take it past its size)."""
+    records = [r for r in records if r.levelno >= handler.level and handler.filter(r)]
+    if not records:
+        return
+    handler.acquire()
+    try:
+        text = ''.join(handler.format(r) + handler.terminator for r in records)
+        if isinstance(handler, logging.FileHandler):
+            _open(handler)
+            if not handler.stream:
+                return  # closed for good, as FileHandler.emit decides
+        if isinstance(handler, logging.handlers.RotatingFileHandler) and handler.maxBytes > 0:
+            handler.stream.seek(0, 2)
+            if handler.stream.tell() + len(text) >= handler.maxBytes:
+                handler.doRollover()
+                _open(handler)
+        handler.stream.write(text)
+        handler.flush()
+    except RecursionError:
+        raise
+    except Exception:
+        handler.handleError(records[0])
+    finally:
+        handler.release()
+
+
+def _open(handler):
+    if handler.stream is None and (handler.mode != 'w' or not handler._closed):
+        handler.stream = handler._open()

@@ -3,7 +3,9 @@ package rason.core;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.locks.LockSupport;
 
 /**
  * Log lines of the agents and of Jason on their way to rosout. An agent's thread only
@@ -33,6 +35,8 @@ public final class LogQueue {
     private final AtomicInteger queued = new AtomicInteger();
     private final AtomicInteger dropped = new AtomicInteger();
     private volatile boolean attached = false;
+    /** The node's thread while it waits in {@link #awaitLines}, else null. */
+    private volatile Thread waiter;
 
     /** Queues a line for the node, or writes it to stderr when no node takes lines. */
     public void add(int level, String agent, String message) {
@@ -45,6 +49,29 @@ public final class LogQueue {
             queued.decrementAndGet();
             dropped.incrementAndGet();
         }
+        Thread w = waiter;
+        if (w != null)
+            LockSupport.unpark(w); // never blocks the agent's thread
+    }
+
+    /**
+     * Waits until a line is queued or {@code millis} have passed, so that the node's thread
+     * sleeps while nobody prints instead of looking every few milliseconds. One thread at a
+     * time (the node's).
+     *
+     * @return whether lines are queued
+     */
+    public boolean awaitLines(long millis) {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(millis);
+        waiter = Thread.currentThread();
+        try {
+            long left;
+            while (queue.isEmpty() && (left = deadline - System.nanoTime()) > 0 && !Thread.interrupted())
+                LockSupport.parkNanos(this, left);
+        } finally {
+            waiter = null;
+        }
+        return !queue.isEmpty();
     }
 
     /** A node takes the lines from now on (true), or none does (false). */

@@ -2,6 +2,11 @@ package rason.core;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.Test;
 
@@ -42,5 +47,32 @@ class LogQueueTest {
         assertEquals(3, q.drainBatch(3).levels().length);
         LogQueue.Batch rest = q.drainBatch(3);
         assertEquals("line3line4", rest.text());
+    }
+
+    @Test
+    void awaitLinesReturnsAtOnceWhenLinesAreQueuedAndFalseAfterItsTimeWithout() {
+        LogQueue q = attached();
+        long t0 = System.nanoTime();
+        assertFalse(q.awaitLines(50));
+        assertTrue(System.nanoTime() - t0 >= TimeUnit.MILLISECONDS.toNanos(50));
+        q.add(800, "bob", "x");
+        assertTrue(q.awaitLines(60_000));
+    }
+
+    @Test
+    void aLineQueuedByAnotherThreadWakesTheWaitingNode() throws Exception {
+        LogQueue q = attached();
+        CompletableFuture<Long> wokeAfter = new CompletableFuture<>();
+        Thread node = new Thread(() -> {
+            long t0 = System.nanoTime();
+            q.awaitLines(60_000);
+            wokeAfter.complete(System.nanoTime() - t0);
+        });
+        node.start();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (node.getState() != Thread.State.TIMED_WAITING && System.nanoTime() < deadline)
+            Thread.onSpinWait();
+        q.add(800, "bob", "x");
+        assertTrue(wokeAfter.get(10, TimeUnit.SECONDS) < TimeUnit.SECONDS.toNanos(10));
     }
 }
