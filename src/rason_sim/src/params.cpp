@@ -1,6 +1,7 @@
 #include "rason_sim/params.h"
 
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "rason_sim/pacing.h"
@@ -75,6 +76,49 @@ XmlRpcValue ParamReader::dictionary(const std::string& key) const {
   return value;
 }
 
+namespace {
+
+Rgb rgbOf(XmlRpcValue& v, const std::string& name) {
+  const std::string what = "~marker_colors/" + name;
+  if (v.getType() != XmlRpcValue::TypeArray || v.size() != 3)
+    throw std::invalid_argument(what + " must be [r, g, b] (0..1)");
+  return Rgb{number(v[0], what), number(v[1], what), number(v[2], what)};
+}
+
+// A robot's cylinders: markers: {left: colour, right: colour, back: colour} gives each one
+// named its colour and puts it on; left_marker, right_marker, back_marker (true or false)
+// put one on or off whatever markers says.
+void readMarkers(XmlRpcValue& s, RobotConfig& robot) {
+  std::map<std::string, std::string> named;
+  if (s.getType() == XmlRpcValue::TypeStruct && s.hasMember("markers")) {
+    XmlRpcValue& markers = s["markers"];
+    if (markers.getType() != XmlRpcValue::TypeStruct)
+      throw std::invalid_argument("~" + robot.name + "/markers must be {left: colour, right: colour, back: colour}");
+    for (auto& entry : markers) {
+      if (entry.first != "left" && entry.first != "right" && entry.first != "back")
+        throw std::invalid_argument("~" + robot.name + "/markers: " + entry.first +
+                                    " is not left, right or back");
+      if (entry.second.getType() != XmlRpcValue::TypeString)
+        throw std::invalid_argument("~" + robot.name + "/markers/" + entry.first + " must name a colour");
+      named[entry.first] = static_cast<std::string>(entry.second);
+    }
+  }
+  struct Side {
+    const char* name;
+    bool& on;
+    std::string& colour;
+  };
+  for (const Side& side : {Side{"left", robot.left_marker, robot.left_color},
+                           Side{"right", robot.right_marker, robot.right_color},
+                           Side{"back", robot.back_marker, robot.back_color}}) {
+    const auto colour = named.find(side.name);
+    if (colour != named.end()) side.colour = colour->second;
+    side.on = flag(s, (std::string(side.name) + "_marker").c_str(), colour != named.end());
+  }
+}
+
+}  // namespace
+
 WorldConfig worldFromParams(const ParamReader& params) {
   WorldConfig world;
   XmlRpcValue room = params.dictionary("room");
@@ -118,6 +162,10 @@ WorldConfig worldFromParams(const ParamReader& params) {
     }
   }
 
+  XmlRpcValue colors = params.dictionary("marker_colors");
+  if (colors.getType() == XmlRpcValue::TypeStruct)
+    for (auto& entry : colors) world.marker_colors[entry.first] = rgbOf(entry.second, entry.first);
+
   XmlRpcValue camera = params.dictionary("camera");
   world.camera.width = static_cast<int>(field(camera, "width", world.camera.width, "~camera"));
   world.camera.height = static_cast<int>(field(camera, "height", world.camera.height, "~camera"));
@@ -134,9 +182,7 @@ WorldConfig worldFromParams(const ParamReader& params) {
     robot.start.y = field(s, "y", 0.0, "~" + name);
     robot.start.yaw = field(s, "yaw", 0.0, "~" + name);
     robot.camera = flag(s, "camera", false);
-    robot.left_marker = flag(s, "left_marker", false);
-    robot.right_marker = flag(s, "right_marker", false);
-    robot.back_marker = flag(s, "back_marker", false);
+    readMarkers(s, robot);
     robot.slip.left = field(s, "left_slip", 0.0, "~" + name);
     robot.slip.right = field(s, "right_slip", 0.0, "~" + name);
     world.robots.push_back(robot);

@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -28,6 +27,7 @@
 #include "rason_sim/camera_messages.h"
 #include "rason_sim/camera_worker.h"
 #include "rason_sim/depth_camera.h"
+#include "rason_sim/mjcf_model.h"
 #include "rason_sim/diff_drive.h"
 #include "rason_sim/frames.h"
 #include "rason_sim/lockstep_acks.h"
@@ -168,19 +168,7 @@ class Simulator {
 
  private:
   void loadModel() {
-    const std::string xml = buildMjcf(world_);
-    // MuJoCo 2.2 has no load-from-string: go through its virtual file system.
-    std::unique_ptr<mjVFS> vfs(new mjVFS);
-    mj_defaultVFS(vfs.get());
-    const char* file = "rason_world.xml";
-    if (mj_makeEmptyFileVFS(vfs.get(), file, static_cast<int>(xml.size())) != 0)
-      throw std::runtime_error("MuJoCo VFS is full");
-    const int index = mj_findFileVFS(vfs.get(), file);
-    std::memcpy(vfs->filedata[index], xml.data(), xml.size());
-    char error[1000] = "";
-    model_ = mj_loadXML(file, vfs.get(), error, sizeof(error));
-    mj_deleteVFS(vfs.get());
-    if (!model_) throw std::runtime_error(std::string("MuJoCo rejected the world: ") + error);
+    model_ = compileMjcf(buildMjcf(world_));
     data_ = mj_makeData(model_);
     mj_forward(model_, data_);
     const int cameras = static_cast<int>(std::count_if(world_.robots.begin(), world_.robots.end(),

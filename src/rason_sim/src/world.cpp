@@ -47,20 +47,19 @@ void writeRobot(std::ostringstream& xml, const RobotConfig& robot, const WorldCo
   }
   const double marker_z = (kMarkerBottom + kMarkerTop) / 2.0;
   const double marker_half = (kMarkerTop - kMarkerBottom) / 2.0;
-  if (robot.left_marker) {
-    xml << "      <geom name='" << n << "_left_marker' type='cylinder' size='" << kMarkerRadius
-        << ' ' << marker_half << "' pos='0 " << kMarkerSeparation / 2.0 << ' ' << marker_z
-        << "' mass='0.02' material='green' contype='0' conaffinity='0'/>\n";
-  }
-  if (robot.right_marker) {
-    xml << "      <geom name='" << n << "_right_marker' type='cylinder' size='" << kMarkerRadius
-        << ' ' << marker_half << "' pos='0 " << -kMarkerSeparation / 2.0 << ' ' << marker_z
-        << "' mass='0.02' material='orange' contype='0' conaffinity='0'/>\n";
-  }
-  if (robot.back_marker) {
-    xml << "      <geom name='" << n << "_back_marker' type='cylinder' size='" << kMarkerRadius
-        << ' ' << marker_half << "' pos='" << -kBackMarkerOffset << " 0 " << marker_z
-        << "' mass='0.02' material='blue' contype='0' conaffinity='0'/>\n";
+  struct Cylinder {
+    bool on;
+    const char* side;
+    const std::string& colour;
+    double x, y;
+  };
+  for (const Cylinder& c : {Cylinder{robot.left_marker, "left", robot.left_color, 0.0, kMarkerSeparation / 2.0},
+                            Cylinder{robot.right_marker, "right", robot.right_color, 0.0, -kMarkerSeparation / 2.0},
+                            Cylinder{robot.back_marker, "back", robot.back_color, -kBackMarkerOffset, 0.0}}) {
+    if (!c.on) continue;
+    xml << "      <geom name='" << n << '_' << c.side << "_marker' type='cylinder' size='"
+        << kMarkerRadius << ' ' << marker_half << "' pos='" << c.x << ' ' << c.y << ' ' << marker_z
+        << "' mass='0.02' material='" << markerMaterial(c.colour) << "' contype='0' conaffinity='0'/>\n";
   }
   if (robot.camera) {
     const CameraConfig& cam = world.camera;
@@ -107,6 +106,12 @@ void validate(const WorldConfig& world) {
       if (!(slip >= 0.0 && slip < 0.5))
         throw std::invalid_argument("robot '" + robot.name + "': wheel slip must be in [0, 0.5)");
   }
+  validatePalette(world.marker_colors);
+  for (const RobotConfig& robot : world.robots)
+    for (const std::string* colour : {&robot.left_color, &robot.right_color, &robot.back_color})
+      if (!world.marker_colors.count(*colour))
+        throw std::invalid_argument("robot '" + robot.name + "': marker colour '" + *colour +
+                                    "' is not in ~marker_colors");
   // Two bases started inside each other would be thrown apart by the contact solver.
   for (size_t i = 0; i < world.robots.size(); ++i)
     for (size_t j = i + 1; j < world.robots.size(); ++j) {
@@ -149,10 +154,13 @@ std::string buildMjcf(const WorldConfig& world) {
       << "    <material name='plate' rgba='0.35 0.3 0.25 1' specular='0.1'/>\n"
       << "    <material name='wheel' rgba='0.05 0.05 0.05 1' specular='0.1'/>\n"
       << "    <material name='obstacle' rgba='0.4 0.4 0.45 1' specular='0.05'/>\n"
-      << "    <material name='green' rgba='0.05 0.65 0.15 1' specular='0.1'/>\n"
-      << "    <material name='orange' rgba='1 0.45 0 1' specular='0.1'/>\n"
-      << "    <material name='blue' rgba='0.1 0.3 0.95 1' specular='0.1'/>\n"
-      << "  </asset>\n"
+      ;
+  for (const auto& colour : world.marker_colors) {
+    const Rgb& c = colour.second;
+    xml << "    <material name='" << markerMaterial(colour.first) << "' rgba='" << c.r << ' ' << c.g
+        << ' ' << c.b << " 1' specular='0.1'/>\n";
+  }
+  xml << "  </asset>\n"
       << "  <worldbody>\n";
   for (const LightConfig& light : world.lights) {
     xml << "    <light pos='" << light.x << ' ' << light.y << ' ' << light.z

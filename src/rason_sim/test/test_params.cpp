@@ -149,6 +149,74 @@ TEST(Params, TheWorldIsReadFromItsDictionariesAndLists) {
   EXPECT_EQ(p.world.robots[1].slip.right, 0.05);
 }
 
+TEST(Params, EachRobotsMarkersTakeTheirColoursFromThePalette) {
+  XmlRpcValue params = oneRobot();
+  params["robots"][1] = std::string("duo");
+  params["robots"][2] = std::string("trio");
+  params["marker_colors"]["red"][0] = 0.85;
+  params["marker_colors"]["red"][1] = 0;  // an int, as YAML writes 0
+  params["marker_colors"]["red"][2] = 0.05;
+  params["marker_colors"]["green"][0] = 0.0;  // the palette's own colours can be redrawn
+  params["marker_colors"]["green"][1] = 1.0;
+  params["marker_colors"]["green"][2] = 0.0;
+  params["duo"]["y"] = 1.0;
+  params["duo"]["markers"]["left"] = std::string("red");
+  params["duo"]["markers"]["right"] = std::string("blue");
+  params["trio"]["y"] = -1.0;
+  params["trio"]["markers"]["left"] = std::string("red");
+  params["trio"]["markers"]["back"] = std::string("green");
+  params["trio"]["left_marker"] = false;  // the flag wins: sim.launch hides a cylinder so
+  params["trio"]["right_marker"] = true;  // and a flag alone takes the default colour
+  const WorldConfig world = simParamsFrom(readerOf(params)).world;
+  ASSERT_EQ(world.marker_colors.count("red"), 1u);
+  EXPECT_EQ(world.marker_colors.at("red").r, 0.85);
+  EXPECT_EQ(world.marker_colors.at("red").g, 0.0);
+  EXPECT_EQ(world.marker_colors.at("green").g, 1.0);
+  EXPECT_EQ(world.marker_colors.at("orange").g, 0.45);  // the default palette stays
+  const RobotConfig& solo = world.robots[0];
+  EXPECT_FALSE(solo.left_marker || solo.right_marker || solo.back_marker);
+  EXPECT_EQ(solo.left_color, "green");
+  EXPECT_EQ(solo.right_color, "orange");
+  EXPECT_EQ(solo.back_color, "blue");
+  const RobotConfig& duo = world.robots[1];
+  EXPECT_TRUE(duo.left_marker && duo.right_marker);
+  EXPECT_FALSE(duo.back_marker);
+  EXPECT_EQ(duo.left_color, "red");
+  EXPECT_EQ(duo.right_color, "blue");
+  const RobotConfig& trio = world.robots[2];
+  EXPECT_FALSE(trio.left_marker);
+  EXPECT_TRUE(trio.right_marker && trio.back_marker);
+  EXPECT_EQ(trio.right_color, "orange");
+  EXPECT_EQ(trio.back_color, "green");
+}
+
+TEST(Params, BadMarkersSayWhichAndWhy) {
+  XmlRpcValue params = oneRobot();
+  params["solo"]["markers"]["left"] = std::string("purple");
+  EXPECT_EQ(errorOf(params), "robot 'solo': marker colour 'purple' is not in ~marker_colors");
+  params["marker_colors"]["purple"] = std::string("#800080");
+  EXPECT_EQ(errorOf(params), "~marker_colors/purple must be [r, g, b] (0..1)");
+  params["marker_colors"]["purple"] = XmlRpcValue();
+  params["marker_colors"]["purple"][0] = 0.5;
+  params["marker_colors"]["purple"][1] = 0.0;
+  params["marker_colors"]["purple"][2] = 2.0;
+  EXPECT_EQ(errorOf(params), "marker colour 'purple' needs [r, g, b] within 0..1");
+  params["marker_colors"]["purple"][2] = std::string("half");
+  EXPECT_EQ(errorOf(params), "~marker_colors/purple must be a number");
+  params["marker_colors"]["purple"][2] = 0.5;
+  EXPECT_EQ(errorOf(params), "");
+  params["solo"]["markers"]["top"] = std::string("purple");
+  EXPECT_EQ(errorOf(params), "~solo/markers: top is not left, right or back");
+  params["solo"]["markers"] = std::string("purple");
+  EXPECT_EQ(errorOf(params), "~solo/markers must be {left: colour, right: colour, back: colour}");
+  params["solo"]["markers"] = XmlRpcValue();
+  params["solo"]["markers"]["left"] = 3;
+  EXPECT_EQ(errorOf(params), "~solo/markers/left must name a colour");
+  params = oneRobot();
+  params["marker_colors"] = std::string("red");
+  EXPECT_EQ(errorOf(params), "~marker_colors must be a dictionary");
+}
+
 TEST(Params, AWorldWithoutRobotsIsRefused) {
   XmlRpcValue params;
   EXPECT_EQ(errorOf(params), "~robots (list of names) is not set");

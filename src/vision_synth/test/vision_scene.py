@@ -99,12 +99,16 @@ class Scene(object):
     :param light_from: direction towards the light (optical frame; (0, -1, 0) = overhead,
         which leaves the vertical cylinders only the ambient light)
     :param separation: distance between the cylinder axes
-    :param extra_pairs: more (x, z, heading, separation) cylinder pairs (decoys)
+    :param extra_pairs: more (x, z, heading, separation[, show[, colors]]) cylinder pairs
+        (decoys, other robots)
+    :param colors: (left, right, back) albedo of the robot's cylinders
     """
 
     def __init__(self, robot=(0.0, 2.0, 0.0), show=('left', 'right'), posts=(), light=1.0,
-                 separation=SEPARATION, extra_pairs=(), light_from=LIGHT):
+                 separation=SEPARATION, extra_pairs=(), light_from=LIGHT,
+                 colors=(GREEN, ORANGE, BLUE)):
         self.robot = robot
+        self.colors = colors
         self.show = set(show)
         self.posts = list(posts)
         self.light = light
@@ -130,17 +134,18 @@ class Scene(object):
             angle, depth, heading = self.robot
             x, z = robot_centre(angle, depth)
             objs.append((x, z, BASE_RADIUS, BASE_SPAN, BASE_GREY))
-            pairs.append((x, z, heading, self.separation, self.show))
+            pairs.append((x, z, heading, self.separation, self.show, self.colors))
         for pair in pairs:
             x, z, heading, separation = pair[:4]
             show = pair[4] if len(pair) > 4 else {'left', 'right'}
+            left_colour, right_colour, back_colour = pair[5] if len(pair) > 5 else (GREEN, ORANGE, BLUE)
             left, right = cylinder_centres(x, z, heading, separation)
             if 'left' in show:
-                objs.append(left + (CYLINDER_RADIUS, CYLINDER_SPAN, GREEN))
+                objs.append(left + (CYLINDER_RADIUS, CYLINDER_SPAN, left_colour))
             if 'right' in show:
-                objs.append(right + (CYLINDER_RADIUS, CYLINDER_SPAN, ORANGE))
+                objs.append(right + (CYLINDER_RADIUS, CYLINDER_SPAN, right_colour))
             if 'back' in show:
-                objs.append(back_centre(x, z, heading) + (CYLINDER_RADIUS, CYLINDER_SPAN, BLUE))
+                objs.append(back_centre(x, z, heading) + (CYLINDER_RADIUS, CYLINDER_SPAN, back_colour))
         for x, z, r in self.posts:
             objs.append((x, z, r, (0.0, 1.0), POST_GREY))
         return objs

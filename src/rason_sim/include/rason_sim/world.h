@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "rason_sim/markers.h"
+
 namespace rason_sim {
 
 // Kobuki-like base geometry (metres), from the Kobuki datasheet.
@@ -28,9 +30,11 @@ struct RobotConfig {
   std::string name;             // also the ROS namespace and tf prefix
   Pose2D start;
   bool camera = false;          // Kinect-like RGB-D camera
-  bool left_marker = false;     // green cylinder on the robot's left
-  bool right_marker = false;    // orange cylinder on the robot's right
-  bool back_marker = false;     // blue cylinder behind the middle of the two (thesis §8.1)
+  bool left_marker = false;     // a cylinder on the robot's left
+  bool right_marker = false;    // a cylinder on the robot's right
+  bool back_marker = false;     // a cylinder behind the middle of the two (thesis §8.1)
+  // their colours, names in WorldConfig::marker_colors (the case study's by default)
+  std::string left_color = "green", right_color = "orange", back_color = "blue";
   WheelSlip slip;
 };
 
@@ -63,6 +67,7 @@ struct WorldConfig {
   std::vector<LightConfig> lights;
   std::vector<RobotConfig> robots;
   std::vector<BoxConfig> boxes;
+  MarkerPalette marker_colors = defaultMarkerPalette();
   BaseGeometry base;
   CameraConfig camera;
 };
@@ -85,7 +90,8 @@ std::string wheelJointName(const std::string& robot, bool left);
 std::string wheelActuatorName(const std::string& robot, bool left);
 std::string cameraName(const std::string& robot);
 
-// Throws std::invalid_argument on an inconsistent world (duplicate names, ...).
+// Throws std::invalid_argument on an inconsistent world (duplicate names, a marker colour
+// not in the palette, ...).
 void validate(const WorldConfig& world);
 std::string buildMjcf(const WorldConfig& world);
 

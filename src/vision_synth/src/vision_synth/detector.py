@@ -33,6 +33,10 @@ DEFAULT_COLORS = {
     'green': {'h': [40, 90], 's': [90, 255], 'v': [10, 255]},
     'orange': {'h': [4, 24], 's': [130, 255], 'v': [12, 255]},
     'blue': {'h': [100, 130], 's': [120, 255], 'v': [10, 255]},
+    # the fleet's (rason_sim/config/fleet.yaml), with green and blue
+    'red': {'h': [172, 8], 's': [130, 255], 'v': [10, 255]},
+    'yellow': {'h': [20, 35], 's': [130, 255], 'v': [10, 255]},
+    'magenta': {'h': [140, 162], 's': [130, 255], 'v': [10, 255]},
 }
 
 #: Agent name -> the colours of its left and right cylinders (seen from behind the robot)

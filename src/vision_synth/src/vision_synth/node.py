@@ -38,6 +38,10 @@ Private parameters (defaults in ``config/vision_synth.yaml`` and :data:`detector
 - ``~robots`` (dict): agent name -> ``{left: colour, right: colour[, back: colour]}``,
   default ``{faulty: {left: green, right: orange, back: blue}}`` (a robot without the
   third, ``back`` cylinder is found by the other two)
+- ``~world`` (dict): a simulator world file (rason_sim's parameters) loaded here; when set,
+  the robots table is its robots' cylinders instead of ``~robots`` (every robot with a left
+  and a right one but this node's own, whose name is its namespace's last part); refused
+  when two robots share two colours (:mod:`vision_synth.world_markers`)
 - ``~colors`` (dict): colour -> ``{h: [lo, hi], s: [lo, hi], v: [lo, hi]}``, OpenCV HSV
   (H 0–180); see :data:`detector.DEFAULT_COLORS`
 - ``~pair_min`` 0.22, ``~pair_max`` 0.25, ``~pair_nominal`` 0.227 (m): cylinder pairing
@@ -56,7 +60,7 @@ import rospy
 from rason_msgs.msg import Perception, RobotSighting, RobotSightings
 from sensor_msgs.msg import CameraInfo, Image, PointCloud2
 
-from vision_synth import cloud, detector, literals
+from vision_synth import cloud, detector, literals, world_markers
 
 WARN_PERIOD = 5.0  # s between repeated warnings about bad input
 CLOUD_BUFF = 1 << 25  # bytes: several 640x480 clouds, so a queue of 1 really drops stale ones
@@ -241,10 +245,14 @@ def main():
                for key, default in detector.DEFAULTS.items()}
     colors = rospy.get_param('~colors', detector.DEFAULT_COLORS)
     robots = rospy.get_param('~robots', detector.DEFAULT_ROBOTS)
+    world = rospy.get_param('~world', None)
     source = str(rospy.get_param('~source', '') or default_source(rospy.get_name()))
     use_image = bool(rospy.get_param('~use_image', False))
     max_stamp_diff = float(rospy.get_param('~max_stamp_diff', 0.05))
     try:
+        if world is not None:
+            robots = world_markers.world_robots(
+                world, exclude={world_markers.robot_of_namespace(rospy.get_namespace())})
         det = detector.Detector(colors, robots, **options)
     except detector.ConfigError as e:
         rospy.logfatal('vision_synth: bad parameter: %s' % e)
