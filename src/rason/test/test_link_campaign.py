@@ -2,6 +2,8 @@
 seed, each run judged by its diagnosis and mission, and the report of drawn against clean links."""
 import json
 
+from rason_hosts.cli import play_and_judge
+from rason_hosts.hosts import HostsError
 from rason_hosts.link_campaign import (CLEAN, DELAYS_MS, FAULTS, LOSSES, MISSION_TOLERANCE, PARTITION_AFTER,
                                        PARTITION_SECONDS, draw_plan, judge, link_label, on_clean_link, report, save)
 
@@ -98,3 +100,24 @@ def test_the_report_is_made_again_from_a_campaign_s_results(tmp_path):
     assert text.startswith('# The case study across hosts: 1 scenarios (seed 5)')
     assert 'Made by `rosrun rason hosts campaign --runs 1` from 2026-11-27 01:00 UTC' in text
     assert '| clean | 1 | 0 | 0 | 1 |' in text
+
+
+
+class _RunEndingAfterItsDiagnosis:
+    """A CaseStudyOnHosts whose run gave its diagnosis, then never ended its mission."""
+
+    def __init__(self):
+        self.marks = {'launched': 10.0}
+        self.diagnosis = None
+
+    def play(self):
+        self.diagnosis, self.marks['diagnosis'] = ('odometry', 'seen moving'), 42.5
+        raise HostsError("waited 400 s for the mission's end in vain; last lines:\n...")
+
+
+def test_a_run_that_failed_after_its_diagnosis_keeps_it_and_says_why_the_mission_did_not_end():
+    played = play_and_judge(_RunEndingAfterItsDiagnosis(), {'fault': 'odometry', 'recovery': True})
+    verdict = played['verdict']
+    assert (verdict['outcome'], verdict['component'], verdict['mission_completed']) == ('correct', 'odometry', False)
+    assert verdict['reason'] == "waited 400 s for the mission's end in vain"
+    assert played['diagnosis_s'] == 32.5

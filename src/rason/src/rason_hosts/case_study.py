@@ -164,6 +164,7 @@ class CaseStudyOnHosts:
         self.timeout = timeout
         self.transcript = Transcript(echo)
         self.marks = {}
+        self.diagnosis = None   # Faulty's (component, evidence) once given, also when the run fails after it
         self._envs = {}
 
     def play(self):
@@ -212,7 +213,7 @@ class CaseStudyOnHosts:
             self.marks['search'] = search[0]
         line = self.transcript.wait(DIAGNOSIS, self.timeout, "Faulty's diagnosis")
         self.marks['diagnosis'] = line[0]
-        diagnosis = DIAGNOSIS.search(line[2]).groups()
+        diagnosis = self.diagnosis = DIAGNOSIS.search(line[2]).groups()
         mission = None
         if self.recovery:
             line = self.transcript.wait(MISSION, self.timeout, "the mission's end")

@@ -12,7 +12,7 @@ import sys
 import tempfile
 import time
 
-from .hosts import DEFAULT_PREFIX, cleanup, list_namespaces
+from .hosts import DEFAULT_PREFIX, HostsError, cleanup, list_namespaces
 from . import link_campaign
 
 
@@ -88,7 +88,7 @@ def _case_study(args):
 
 def _campaign(args, argv_seen=None):
     from .case_study import HOST_NAMES, CaseStudyOnHosts
-    from .hosts import Hosts, HostsError
+    from .hosts import Hosts
 
     faults = link_campaign.FAULTS if args.faults == 'all' else tuple(args.faults.split(','))
     unknown = sorted(set(faults) - set(link_campaign.FAULTS))
@@ -116,21 +116,13 @@ def _campaign(args, argv_seen=None):
             folder = os.path.join(args.out, 'runs', '%03d-%s' % (scenario['run'], link))
             os.makedirs(folder, exist_ok=True)
             record = {'scenario': played, 'link': link}
-            diagnosis = failure = mission = closest = back = None
             with Hosts(HOST_NAMES) as hosts:
                 partition = played['partition'] or {}
                 run = CaseStudyOnHosts(hosts, folder, fault=played['fault'], recovery=played['recovery'],
                                        loss=played['loss'], delay_ms=played['delay_ms'],
                                        partition=partition.get('seconds'), partition_after=partition.get('after', 0),
                                        rate=args.rate, seed=played['seed'], timeout=args.timeout)
-                try:
-                    outcome = run.play()
-                    diagnosis, mission = outcome.diagnosis, outcome.mission
-                    closest, back = outcome.mission_judged()
-                    record['diagnosis_s'] = run.marks['diagnosis'] - run.marks['launched']
-                except HostsError as e:
-                    failure = str(e).splitlines()[0].split('; last lines')[0]
-            record['verdict'] = link_campaign.judge(played, diagnosis, failure, mission, closest, back)
+                record.update(play_and_judge(run, played))
             records.append(record)
             link_campaign.save(records, os.path.join(args.out, 'results.json'))
             print('[%d/%d %s] %s on %s: %s%s' % (
@@ -138,6 +130,24 @@ def _campaign(args, argv_seen=None):
                 record['verdict']['outcome'],
                 ' in %.1f s' % record['diagnosis_s'] if record.get('diagnosis_s') else ''), flush=True)
     return _campaign_report(records, args.out)
+
+
+def play_and_judge(run, played):
+    """Plays run (a CaseStudyOnHosts of scenario played); its verdict and, once Faulty gave its
+    diagnosis, the wall seconds to it. A run that fails after the diagnosis (the mission never
+    ended) keeps the diagnosis, with the failure as the reason."""
+    diagnosis = failure = mission = closest = back = None
+    try:
+        outcome = run.play()
+        diagnosis, mission = outcome.diagnosis, outcome.mission
+        closest, back = outcome.mission_judged()
+    except HostsError as e:
+        diagnosis = run.diagnosis
+        failure = str(e).splitlines()[0].split('; last lines')[0]
+    played_out = {'verdict': link_campaign.judge(played, diagnosis, failure, mission, closest, back)}
+    if 'diagnosis' in run.marks:
+        played_out['diagnosis_s'] = run.marks['diagnosis'] - run.marks['launched']
+    return played_out
 
 
 def _campaign_report(records, out):
