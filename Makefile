@@ -20,7 +20,7 @@ APT_PACKAGES := catkin ros-message-generation ros-message-runtime libstd-msgs-de
   libmujoco-dev libqhull-dev libosmesa6-dev libgtest-dev python3-matplotlib python3-psutil \
   python3-actionlib python3-actionlib-msgs ros-actionlib-msgs python3-std-srvs ros-std-srvs \
   python3-move-base-msgs ros-move-base-msgs \
-  python3-paho-mqtt python3-selenium chromium chromium-driver python3-visualization-msgs ros-visualization-msgs python3-yaml \
+  python3-selenium chromium chromium-driver python3-visualization-msgs ros-visualization-msgs python3-yaml \
   mosquitto mosquitto-clients python3-paho-mqtt nftables iproute2 \
   mkdocs mkdocs-material python3-pymdownx python3-pil
 
