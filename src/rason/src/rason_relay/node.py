@@ -30,6 +30,7 @@ import time
 import rospy
 import roslib.message
 
+from rason_bridge.fleet_auth import default_key_file
 from rason_bridge.fleet_key import read_keys
 from rason_relay.envelope import Refused
 from rason_relay.relay import Inbound, Outbound
@@ -192,7 +193,7 @@ def main(argv=None):
         rospy.logfatal('topic_relay: %s', e)
         return 2
     import rospkg
-    key_file = rospy.get_param('~fleet_key_file', '') or os.path.join(rospkg.get_ros_home(), 'rason', 'fleet.key')
+    key_file = rospy.get_param('~fleet_key_file', '') or default_key_file(rospkg.get_ros_home())
     try:
         keys = _wait_for_keys(key_file)
         client = _mqtt_client(settings, 'rason-relay-%s-%d' % (settings.robot.replace('/', '-'), os.getpid()))
