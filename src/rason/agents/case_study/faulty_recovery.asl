@@ -14,9 +14,9 @@
 
 missionLength(1).          // metres ahead of the start (thesis §7: move(1), then move(-1))
 guideWait(20000).          // ms to wait for the helper's first sighting when guided
-guidedTries(10).           // goto tries while guided: the helper's view of me pauses while the
-guidedPause(1000).         // link between us drops (I stand still, goto fails no_progress);
-                           // ms between two tries
+guidedTries(60).           // goto tries while guided: the helper's view of me pauses while the
+guidedPause(1000).         // link between us drops (I stand still, goto fails no_progress;
+                           // at 30 % loss each way for up to 20 s); ms between two tries
 proposalWait(5000).        // ms to wait for the proposals of a call for proposals
 delegateTimeout(180000).   // ms for the winner of the contract net to report back
 

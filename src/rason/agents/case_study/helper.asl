@@ -15,7 +15,9 @@ centerThreshold(7).
 maxCentringTurns(4).
 centringTurnsSoFar(N) :- centringTurns(N).
 centringTurnsSoFar(0) :- not centringTurns(_).
-partnerGrace(15000).   // IMPROVED: ms I go on helping a robot out of reach (see -present)
+partnerGrace(60000).   // IMPROVED: ms I go on helping a robot out of reach (see -present):
+                       // a cut of 10 s plus the reconnection over a lossy link, in ROS
+                       // time, which runs up to twice as fast as the wall at rate 0
 settleTime(400).       // FIX: ms for the robots to stop and fresh frames to arrive
 
 // FIX: on a busy CPU the camera -> synthesizer -> belief pipeline can lag the robots by
@@ -187,12 +189,26 @@ halfTurn(D, D) :- D > -180 & D <= 180.
   .print("I'm ready.");
   .send(R,achieve,tryMove).
 
++!trackMe[source(R)]
+: not helping(R)
+<- !notHelping(R).
+
 -!trackMe[source(R)]
 <- !sendSafely(R,achieve,noFeedback("the helper lost sight of the robot before it moved")).
+
+// A robot back after I stopped helping it (it was out of reach for longer than
+// partnerGrace): tell it why, instead of blaming the camera.
++!notHelping(R)
+<- .print("I no longer help ", R, ": it was out of reach for too long");
+  !sendSafely(R,achieve,noFeedback("the helper had stopped helping: the robot was out of reach for longer than its grace")).
+
 
 +!giveFeedback[source(R)]
 : helping(R)
 <- !reportFeedback(R).
++!giveFeedback[source(R)]
+: not helping(R)
+<- !notHelping(R).
 
 +!reportFeedback(R)
 : foundRobot(R,Deg,Depth,Yaw)

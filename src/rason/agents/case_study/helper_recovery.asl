@@ -41,9 +41,16 @@ sideOf(L, -1) :- L < 0.
     .print("Stopped guiding ", R).
 +!stopGuiding[source(R)] <- true.
 
--present(R) : guiding(R)
-<- -guiding(R);
+// A robot out of reach while I guide it may only be behind a lossy link (presence drops
+// for seconds at 20-30 % loss): its pose still goes out through the relay, so I go on
+// guiding for partnerGrace and stop only if it is not back by then.
+-present(R) : guiding(R) <- !awaitGuided(R).
++!awaitGuided(R) : partnerGrace(G) <- .wait(present(R), G).
+-!awaitGuided(R) : guiding(R) & not present(R)
+<- .print(R, " left; I stop guiding it");
+    -guiding(R);
     .drop_desire(keepGuiding(R)).
+-!awaitGuided(_) <- true.
 
 /* Contract net: a robot that cannot move calls for proposals to reach a point */
 
