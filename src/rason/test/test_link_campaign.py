@@ -5,7 +5,8 @@ import json
 from rason_hosts.cli import play_and_judge
 from rason_hosts.hosts import HostsError
 from rason_hosts.link_campaign import (CLEAN, DELAYS_MS, FAULTS, LOSSES, MISSION_TOLERANCE, PARTITION_AFTER,
-                                       PARTITION_SECONDS, draw_plan, judge, link_label, on_clean_link, report, save)
+                                       PARTITION_SECONDS, draw_plan, judge, link_label, on_clean_link, remaining,
+                                       report, save)
 
 
 def test_the_plan_is_drawn_from_the_seed_with_every_fault_in_turn():
@@ -121,3 +122,39 @@ def test_a_run_that_failed_after_its_diagnosis_keeps_it_and_says_why_the_mission
     assert (verdict['outcome'], verdict['component'], verdict['mission_completed']) == ('correct', 'odometry', False)
     assert verdict['reason'] == "waited 400 s for the mission's end in vain"
     assert played['diagnosis_s'] == 32.5
+
+
+def test_a_resumed_campaign_plays_only_the_scenarios_not_played_on_both_links():
+    plan = draw_plan(4, seed=7)
+    played = lambda s, link: {'scenario': s if link == 'drawn' else on_clean_link(s), 'link': link,  # noqa: E731
+                              'verdict': judge(s, (s['fault'], ''))}
+    records = [played(plan[0], 'drawn'), played(plan[0], 'clean'), played(plan[1], 'drawn'),
+               played(plan[2], 'clean'), played(plan[2], 'drawn')]
+    done, to_play = remaining(plan, records)
+    assert [(r['scenario']['run'], r['link']) for r in done] == [(1, 'drawn'), (1, 'clean'), (3, 'clean'), (3, 'drawn')]
+    assert [s['run'] for s in to_play] == [2, 4]
+    assert remaining(plan, []) == ([], plan)
+
+
+def test_a_cut_is_timed_from_helper_s_search_or_with_no_fault_from_faulty_s_first_move():
+    from rason_hosts.case_study import cut_anchor
+    search, moving = '[helper] Finding faulty turning 10 degrees', '[faulty] Moving to Destination'
+    diagnosis = '[faulty] Diagnosis: none (no fault)'
+    assert cut_anchor('left_actuator').search(search) and not cut_anchor('left_actuator').search(moving)
+    assert cut_anchor('none').search(moving) and not cut_anchor('none').search(search)
+    assert all(cut_anchor(f).search(diagnosis) for f in ('none', 'odometry'))
+
+
+def test_a_resumed_campaign_s_report_says_when_it_was_resumed(tmp_path):
+    from rason_hosts.cli import main
+    plan = draw_plan(1, seed=5)
+    save([{'scenario': plan[0], 'link': 'drawn', 'verdict': judge(plan[0], (plan[0]['fault'], ''))},
+          {'scenario': on_clean_link(plan[0]), 'link': 'clean', 'verdict': judge(plan[0], (plan[0]['fault'], ''))}],
+         str(tmp_path / 'results.json'))
+    (tmp_path / 'campaign.json').write_text(json.dumps({
+        'command': 'rosrun rason hosts campaign --runs 1', 'seed': 5, 'started': '2026-11-27 01:00', 'rate': 0,
+        'cores': 2, 'resumed': [{'at': '2026-11-27 02:00', 'from_run': 1, 'command': 'rosrun rason hosts campaign '
+                                                                                    '--runs 1 --resume'}]}))
+    assert main(['campaign', '--analyze-only', '--out', str(tmp_path)]) == 0
+    assert 'Resumed from run 1 at 2026-11-27 02:00 UTC (`rosrun rason hosts campaign --runs 1 --resume`).' in \
+        (tmp_path / 'report.md').read_text()

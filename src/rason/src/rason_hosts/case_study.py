@@ -28,6 +28,16 @@ DIAGNOSIS = re.compile(r'\[faulty\] Diagnosis: (\w+) \((.*)\)')
 MISSION = re.compile(r'\[faulty\] Mission completed: (\w+) by \[?([\w, ]*)\]? \(recovery (\w+)\)')
 #: Helper's search for Faulty has begun (thesis Listing A.2, findRobot).
 SEARCH = re.compile(r'\[helper\] (Finding|Found) faulty')
+#: Faulty's first move: where a cut is timed from when no search comes (no fault).
+MOVING = re.compile(r'\[faulty\] Moving to Destination')
+
+
+def cut_anchor(fault):
+    """What a scenario's cut is timed from: Helper's search, or with no fault (Helper never
+    searches) Faulty's first move; either way the diagnosis too, which ends the wait (a
+    diagnosis given before the search: nothing left to cut)."""
+    first = MOVING if fault == 'none' else SEARCH
+    return re.compile('%s|%s' % (first.pattern, DIAGNOSIS.pattern))
 FLEET_CONF = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'config',
                           'mosquitto', 'fleet.conf')
 
@@ -205,12 +215,13 @@ class CaseStudyOnHosts:
         self.marks['launched'] = time.time()
         cut = None
         if self.partition_seconds:
-            search = self.transcript.wait(SEARCH, self.timeout, "Helper's search")
-            if self.partition_after:
-                time.sleep(self.partition_after)    # the scenario's cut comes that long into the search
-            self.marks['cut'] = time.time()
-            cut = self.hosts.partition('helper', self.partition_seconds)
-            self.marks['search'] = search[0]
+            anchor = self.transcript.wait(cut_anchor(self.fault), self.timeout, "Helper's search")
+            if not DIAGNOSIS.search(anchor[2]):
+                if self.partition_after:
+                    time.sleep(self.partition_after)    # the scenario's cut comes that long into the search
+                self.marks['cut'] = time.time()
+                cut = self.hosts.partition('helper', self.partition_seconds)
+                self.marks['search'] = anchor[0]
         line = self.transcript.wait(DIAGNOSIS, self.timeout, "Faulty's diagnosis")
         self.marks['diagnosis'] = line[0]
         diagnosis = self.diagnosis = DIAGNOSIS.search(line[2]).groups()

@@ -40,6 +40,9 @@ def main(argv=None):
     campaign.add_argument('--rate', type=float, default=1, help="the simulator's real-time factor (0: lockstep)")
     campaign.add_argument('--timeout', type=float, default=240, help='wall s a run may take to its diagnosis')
     campaign.add_argument('--out', required=True, help='folder for report.md, results.json and the runs\' logs')
+    campaign.add_argument('--resume', action='store_true',
+                          help='go on with the campaign in OUT (same plan): play only the scenarios not yet played on '
+                               'both links')
     campaign.add_argument('--analyze-only', action='store_true',
                           help="make report.md again from OUT/results.json (e.g. of a campaign stopped early)")
     args = parser.parse_args(argv)
@@ -104,14 +107,22 @@ def _campaign(args, argv_seen=None):
             records = json.load(f)
         return _campaign_report(records, args.out)
     os.makedirs(args.out, exist_ok=True)
-    made = {'command': 'rosrun rason hosts ' + ' '.join(sys.argv[1:] if argv_seen is None else argv_seen),
-            'started': time.strftime('%Y-%m-%d %H:%M', time.gmtime()), 'rate': args.rate, 'seed': args.seed,
-            'cores': os.cpu_count()}
+    plan = link_campaign.draw_plan(args.runs, args.seed, faults, args.recovery)
+    command = 'rosrun rason hosts ' + ' '.join(sys.argv[1:] if argv_seen is None else argv_seen)
+    now = time.strftime('%Y-%m-%d %H:%M', time.gmtime())
+    records, to_play = [], plan
+    if args.resume:
+        with open(os.path.join(args.out, 'campaign.json')) as f:
+            made = json.load(f)
+        with open(os.path.join(args.out, 'results.json')) as f:
+            records, to_play = link_campaign.remaining(plan, json.load(f))
+        made.setdefault('resumed', []).append({'at': now, 'command': command, 'from_run': to_play[0]['run']
+                                               if to_play else None})
+    else:
+        made = {'command': command, 'started': now, 'rate': args.rate, 'seed': args.seed, 'cores': os.cpu_count()}
     with open(os.path.join(args.out, 'campaign.json'), 'w') as f:
         json.dump(made, f, indent=1)
-    plan = link_campaign.draw_plan(args.runs, args.seed, faults, args.recovery)
-    records = []
-    for scenario in plan:
+    for scenario in to_play:
         for link, played in (('drawn', scenario), ('clean', link_campaign.on_clean_link(scenario))):
             folder = os.path.join(args.out, 'runs', '%03d-%s' % (scenario['run'], link))
             os.makedirs(folder, exist_ok=True)
@@ -160,6 +171,8 @@ def _campaign_report(records, out):
     how = ('Made by `%s` from %s UTC (%d cores, shared), the simulator at real-time factor %g; times are wall '
            'seconds from the robots\' launch to Faulty\'s diagnosis. Each run\'s logs: `runs/`, not committed.'
            % (made['command'], made['started'], made['cores'], made['rate']))
+    for resumed in made.get('resumed', ()):
+        how += ' Resumed from run %s at %s UTC (`%s`).' % (resumed['from_run'], resumed['at'], resumed['command'])
     with open(os.path.join(out, 'report.md'), 'w') as f:
         f.write(link_campaign.report(records, title, how))
     print('report: %s' % os.path.join(out, 'report.md'), flush=True)

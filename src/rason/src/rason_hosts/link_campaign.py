@@ -40,6 +40,16 @@ def draw_plan(runs, seed, faults=FAULTS, recovery=False):
     return plan
 
 
+def remaining(plan, records):
+    """The records of the scenarios of plan played on both links, and the scenarios still to
+    play (a scenario played on one link only is played again on both)."""
+    links = {}
+    for r in records:
+        links.setdefault(r['scenario']['run'], []).append(r)
+    done = [r for s in plan if len(links.get(s['run'], ())) == 2 for r in links[s['run']]]
+    return done, [s for s in plan if len(links.get(s['run'], ())) != 2]
+
+
 def on_clean_link(scenario):
     """The same scenario (fault, seed) on a clean link."""
     return dict(scenario, **CLEAN)
