@@ -7,6 +7,7 @@ import argparse
 import json
 import os
 import re
+import shutil
 import signal
 import sys
 import tempfile
@@ -125,7 +126,8 @@ def _campaign(args, argv_seen=None):
     for scenario in to_play:
         for link, played in (('drawn', scenario), ('clean', link_campaign.on_clean_link(scenario))):
             folder = os.path.join(args.out, 'runs', '%03d-%s' % (scenario['run'], link))
-            os.makedirs(folder, exist_ok=True)
+            shutil.rmtree(folder, ignore_errors=True)     # what a stopped campaign left of the run
+            os.makedirs(folder)
             record = {'scenario': played, 'link': link}
             with Hosts(HOST_NAMES) as hosts:
                 partition = played['partition'] or {}
