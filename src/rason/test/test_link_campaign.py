@@ -1,12 +1,18 @@
 """The campaign across hosts without hosts (rason_hosts.link_campaign): the plan drawn from a
 seed, each run judged by its diagnosis and mission, and the report of drawn against clean links."""
 import json
+import os
+import re
 
 from rason_hosts.cli import play_and_judge
 from rason_hosts.hosts import HostsError
-from rason_hosts.link_campaign import (CLEAN, DELAYS_MS, FAULTS, LOSSES, MISSION_TOLERANCE, PARTITION_AFTER,
-                                       PARTITION_SECONDS, draw_plan, judge, link_label, on_clean_link, remaining,
+from rason_hosts.link_campaign import (CLEAN, DELAYS_MS, FAULTS, HELP_TIMEOUT_S, LOSSES, MISSION_TOLERANCE,
+                                       PARTITION_AFTER, PARTITION_SECONDS, by_factor, counted_apart, cut_band,
+                                       draw_plan, goals, judge, link_label, missions, on_clean_link, remaining,
                                        report, save)
+from rason_hosts.link_figures import links_figure, loss_columns
+
+FAULTY_ASL = os.path.join(os.path.dirname(__file__), '..', 'agents', 'case_study', 'faulty.asl')
 
 
 def test_the_plan_is_drawn_from_the_seed_with_every_fault_in_turn():
@@ -101,6 +107,7 @@ def test_the_report_is_made_again_from_a_campaign_s_results(tmp_path):
     assert text.startswith('# The case study across hosts: 1 scenarios (seed 5)')
     assert 'Made by `rosrun rason hosts campaign --runs 1` from 2026-11-27 01:00 UTC' in text
     assert '| clean | 1 | 0 | 0 | 1 |' in text
+    assert '![Missions completed' in text and (tmp_path / 'links.png').read_bytes()[:4] == b'\x89PNG'
 
 
 
@@ -158,3 +165,68 @@ def test_a_resumed_campaign_s_report_says_when_it_was_resumed(tmp_path):
     assert main(['campaign', '--analyze-only', '--out', str(tmp_path)]) == 0
     assert 'Resumed from run 1 at 2026-11-27 02:00 UTC (`rosrun rason hosts campaign --runs 1 --resume`).' in \
         (tmp_path / 'report.md').read_text()
+
+def _run(run, link, loss, completed, outcome='correct', partition=None, diagnosis_s=30.0):
+    scenario = {'run': run, 'seed': 1000 + run, 'fault': 'left_actuator', 'recovery': True, 'loss': loss,
+                'delay_ms': 0, 'partition': partition}
+    return {'scenario': scenario, 'link': link, 'diagnosis_s': diagnosis_s,
+            'verdict': {'outcome': outcome, 'component': 'left_actuator', 'reason': None,
+                        'mission_completed': completed}}
+
+
+def test_the_help_timeout_is_faulty_s():
+    with open(FAULTY_ASL) as f:
+        assert re.search(r'^helpTimeout\((\d+)\)\.', f.read(), re.M).group(1) == str(HELP_TIMEOUT_S * 1000)
+
+
+def test_a_cut_longer_than_the_help_timeout_is_counted_apart_and_cuts_fall_in_bands():
+    short = {'seconds': 4.0, 'after': 1.0}
+    long = {'seconds': HELP_TIMEOUT_S + 1.0, 'after': 1.0}
+    assert not counted_apart(_run(1, 'drawn', 10, True, partition=short)['scenario'])
+    assert counted_apart(_run(1, 'drawn', 10, True, partition=long)['scenario'])
+    assert [cut_band(_run(1, 'drawn', 0, True, partition=p)['scenario'])
+            for p in (None, short, {'seconds': 5.0, 'after': 0}, {'seconds': 9.9, 'after': 0}, long)] == [
+        'no cut', 'cut up to 5 s', 'cut up to 5 s', 'cut over 5 s', 'cut over %d s' % HELP_TIMEOUT_S]
+    records = [_run(1, 'drawn', 10, True), _run(2, 'drawn', 20, False), _run(3, 'drawn', 30, False, partition=long)]
+    assert missions(records) == (1, 2, 1)
+
+
+def test_the_goals_say_the_share_completed_and_the_wrong_diagnoses_and_whether_they_are_met():
+    met = [_run(k, 'drawn', 10, True) for k in range(1, 21)] + [_run(21, 'drawn', 10, False)]
+    text = '\n'.join(goals(met))
+    assert '**20 of 21 (95 %)**; goal at least 95 %: met.' in text
+    assert 'Counted apart' in text and ': 0.' in text
+    assert 'Wrong diagnoses, both links: **0**; goal 0: met.' in text
+    missed = met + [_run(22, 'drawn', 30, False, outcome='wrong'), _run(22, 'clean', 0, True)]
+    text = '\n'.join(goals(missed))
+    assert '**20 of 22 (91 %)**; goal at least 95 %: not met.' in text
+    assert '**1**; goal 0: not met.' in text
+
+
+def test_each_factor_level_of_the_drawn_links_is_set_beside_its_clean_twins():
+    records = [_run(1, 'drawn', 30, False), _run(1, 'clean', 0, True),
+               _run(2, 'drawn', 10, True, partition={'seconds': 7.0, 'after': 1.0}), _run(2, 'clean', 0, True),
+               _run(3, 'drawn', 30, True), _run(3, 'clean', 0, False)]
+    rows = {(factor, level): (len(runs), missions(runs)[:2], missions(twins)[:2])
+            for factor, level, runs, twins in by_factor(records)}
+    assert rows[('loss', '10 %')] == (1, (1, 1), (1, 1))
+    assert rows[('loss', '30 %')] == (2, (1, 2), (1, 2))
+    assert rows[('cut', 'cut over 5 s')] == (1, (1, 1), (1, 1))
+    assert rows[('cut', 'no cut')] == (2, (1, 2), (1, 2))
+    assert [level for factor, level, _, _ in by_factor(records) if factor == 'loss'] == ['10 %', '30 %']
+    text = report(records, 'Test')
+    assert '| loss | 30 % | 2 | 2 | 0 | 0 | 1 of 2 | 1 of 2 |' in text
+
+
+def test_the_figure_has_a_column_per_loss_level_with_the_runs_behind_it(tmp_path):
+    records = [_run(1, 'drawn', 30, False, diagnosis_s=40.0), _run(1, 'clean', 0, True, diagnosis_s=20.0),
+               _run(2, 'drawn', 0, True, partition={'seconds': 3.0, 'after': 1.0}, diagnosis_s=35.0),
+               _run(2, 'clean', 0, True, diagnosis_s=21.0),
+               _run(3, 'drawn', 30, True, outcome='undiagnosed'), _run(3, 'clean', 0, True, diagnosis_s=22.0)]
+    columns = loss_columns(records)
+    assert [(c[0], c[1], c[2]) for c in columns] == [('0 %', (1, 1), (1, 1)), ('30 %', (1, 2), (2, 2))]
+    assert columns[0][3] == [(35.0, True)] and columns[1][3] == [(40.0, False)]
+    assert sorted(columns[1][4]) == [20.0, 22.0]
+    path = tmp_path / 'links.png'
+    links_figure(records, str(path))
+    assert path.read_bytes()[:4] == b'\x89PNG' and path.stat().st_size > 5000

@@ -163,6 +163,9 @@ def play_and_judge(run, played):
     return played_out
 
 
+FIGURE = 'links.png'
+
+
 def _campaign_report(records, out):
     """report.md of out from records, with how the campaign was made (out/campaign.json)."""
     with open(os.path.join(out, 'campaign.json')) as f:
@@ -175,8 +178,10 @@ def _campaign_report(records, out):
            % (made['command'], made['started'], made['cores'], made['rate']))
     for resumed in made.get('resumed', ()):
         how += ' Resumed from run %s at %s UTC (`%s`).' % (resumed['from_run'], resumed['at'], resumed['command'])
+    from .link_figures import links_figure
+    links_figure(records, os.path.join(out, FIGURE))
     with open(os.path.join(out, 'report.md'), 'w') as f:
-        f.write(link_campaign.report(records, title, how))
+        f.write(link_campaign.report(records, title, how, figure=FIGURE))
     print('report: %s' % os.path.join(out, 'report.md'), flush=True)
     return 1 if any(r['verdict']['outcome'] == 'wrong' for r in records) else 0
 

@@ -19,6 +19,10 @@ PARTITION_SECONDS = (1.0, 10.0)     # how long Helper's link is cut
 PARTITION_AFTER = (0.0, 6.0)        # s after Helper's search began
 MISSION_TOLERANCE = 0.15            # m: the mission's judge (as the fault-tolerance rostests')
 CLEAN = {'loss': 0, 'delay_ms': 0, 'partition': None}
+HELP_TIMEOUT_S = 120                # Faulty's helpTimeout (faulty.asl): a cut longer than this
+                                    # ends the mission by design; such runs are counted apart
+MISSION_GOAL = 0.95                 # missions completed on drawn links, of those counted
+CUT_BANDS = (('no cut', 0), ('cut up to 5 s', 5), ('cut over 5 s', HELP_TIMEOUT_S))   # name, up to s
 
 
 def draw_plan(runs, seed, faults=FAULTS, recovery=False):
@@ -90,6 +94,90 @@ def link_label(scenario):
     return ', '.join(parts) or 'clean'
 
 
+def counted_apart(scenario):
+    """A scenario whose cut outlasts the mission's own timeout: not counted for the goal."""
+    return bool(scenario['partition']) and scenario['partition']['seconds'] > HELP_TIMEOUT_S
+
+
+def cut_band(scenario):
+    """The CUT_BANDS name of a scenario's partition."""
+    seconds = scenario['partition']['seconds'] if scenario['partition'] else 0
+    for name, upto in CUT_BANDS:
+        if seconds <= upto:
+            return name
+    return 'cut over %d s' % HELP_TIMEOUT_S
+
+
+FACTORS = (('loss', lambda s: '%g %%' % s['loss']), ('delay', lambda s: '%d ms' % s['delay_ms']),
+           ('cut', cut_band), ('fault', lambda s: s['fault']))
+
+
+def missions(records):
+    """(completed, counted, apart): missions completed among the runs counted, and the number
+    counted apart (counted_apart). Runs without the mission count for nothing."""
+    with_mission = [r for r in records if 'mission_completed' in r['verdict']]
+    apart = [r for r in with_mission if counted_apart(r['scenario'])]
+    counted = [r for r in with_mission if not counted_apart(r['scenario'])]
+    return sum(r['verdict']['mission_completed'] for r in counted), len(counted), len(apart)
+
+
+def goals(records):
+    """The acceptance goals of the campaign, measured on the drawn links: lines of Markdown."""
+    drawn = [r for r in records if r['link'] == 'drawn']
+    wrong = sum(1 for r in records if r['verdict']['outcome'] == 'wrong')
+    lines = []
+    completed, counted, apart = missions(drawn)
+    if counted:
+        share = completed / counted
+        lines.append('- Missions completed on the drawn links: **%d of %d (%.0f %%)**; goal at least %.0f %%: %s.'
+                     % (completed, counted, 100 * share, 100 * MISSION_GOAL,
+                        'met' if share >= MISSION_GOAL else 'not met'))
+        lines.append('- Counted apart (a cut longer than Faulty\'s %d s help timeout): %d.' % (HELP_TIMEOUT_S, apart))
+    lines.append('- Wrong diagnoses, both links: **%d**; goal 0: %s.' % (wrong, 'met' if wrong == 0 else 'not met'))
+    return lines
+
+
+def by_factor(records):
+    """(factor, level, drawn records, their clean twins) for every level of every factor the
+    drawn links took, in FACTORS order and levels in the order drawn values sort."""
+    drawn = [r for r in records if r['link'] == 'drawn']
+    clean = {r['scenario']['run']: r for r in records if r['link'] == 'clean'}
+    rows = []
+    for factor, level_of in FACTORS:
+        levels = {}
+        for r in drawn:
+            levels.setdefault(level_of(r['scenario']), []).append(r)
+        for level in sorted(levels, key=lambda k: _level_key(factor, k)):
+            runs = levels[level]
+            twins = [clean[r['scenario']['run']] for r in runs if r['scenario']['run'] in clean]
+            rows.append((factor, level, runs, twins))
+    return rows
+
+
+def _level_key(factor, level):
+    if factor in ('loss', 'delay'):
+        return float(level.split()[0])
+    if factor == 'cut':
+        names = [name for name, _ in CUT_BANDS]
+        return names.index(level) if level in names else len(names)
+    return FAULTS.index(level) if level in FAULTS else 99
+
+
+def _missions_cell(records):
+    completed, counted, _ = missions(records)
+    return '%d of %d' % (completed, counted) if counted else '-'
+
+
+def _factor_table(records):
+    rows = []
+    for factor, level, runs, twins in by_factor(records):
+        count = lambda outcome: sum(1 for r in runs if r['verdict']['outcome'] == outcome)  # noqa: E731
+        rows.append([factor, level, str(len(runs)), str(count('correct')), str(count('undiagnosed')),
+                     str(count('wrong')), _missions_cell(runs), _missions_cell(twins)])
+    return _table(['factor', 'level', 'drawn runs', 'correct', 'undiagnosed', 'wrong',
+                   'missions completed, drawn', 'the same runs, clean'], rows)
+
+
 def _summary_row(name, records):
     n = len(records)
     count = lambda outcome: sum(1 for r in records if r['verdict']['outcome'] == outcome)  # noqa: E731
@@ -107,16 +195,20 @@ def _table(header, rows):
     return '\n'.join(lines)
 
 
-def report(records, title, how=''):
+def report(records, title, how='', figure=None):
     """The campaign's report in Markdown: records are dicts with scenario, link ('drawn' or
     'clean'), verdict and diagnosis_s (wall s from launch to the diagnosis); how: a paragraph
-    on how it was made (command, date, machine)."""
+    on how it was made (command, date, machine); figure: the file name of its figure."""
     drawn = [r for r in records if r['link'] == 'drawn']
     clean = [r for r in records if r['link'] == 'clean']
     header = ['link', 'runs', 'correct', 'undiagnosed', 'wrong', 'missions completed',
               'time to diagnosis (correct runs) median / max, s']
     summary = _table(header, [_summary_row('drawn (lossy, slow, cut)', drawn), _summary_row('clean', clean)])
-    out = ['# ' + title, ''] + ([how, ''] if how else []) + [summary, '']
+    out = ['# ' + title, ''] + ([how, ''] if how else []) + [summary, ''] + goals(records) + ['']
+    if figure:
+        out += ['![Missions completed and time to diagnosis by loss, drawn links beside the same runs on '
+                'a clean link](%s)' % figure, '']
+    out += ['By factor of the drawn link (each run beside its clean twin):', '', _factor_table(records), '']
     reasons = {}
     for r in records:
         if r['verdict']['outcome'] == 'undiagnosed':

@@ -1,6 +1,7 @@
 """The topic relay's parameters, checked, and the broker topic of each relayed ROS topic."""
 import collections
-import urllib.parse
+
+from rason_bridge.mqtt_url import parse_mqtt_url
 
 Settings = collections.namedtuple('Settings', 'robot host port tls prefix username password_file ca_file '
                                               'send receive max_bytes max_age max_rate')
@@ -39,15 +40,10 @@ def parse_settings(params, resolve, default_robot):
     :param default_robot: the sender name when ``~robot`` is not given (the node's namespace)
     :raises SettingsError: with the parameter and what it may be
     """
-    url = params.get('mqtt_url', DEFAULT_URL)
-    parsed = urllib.parse.urlparse(url) if isinstance(url, str) else None
-    if parsed is None or parsed.scheme not in ('tcp', 'mqtt', 'ssl') or not parsed.hostname:
-        raise SettingsError("~mqtt_url %r must be tcp://HOST:PORT or ssl://HOST:PORT" % (url,))
-    tls = parsed.scheme == 'ssl'
     try:
-        port = parsed.port or (8883 if tls else 1883)
-    except ValueError:
-        raise SettingsError('~mqtt_url %r: the port is not a number from 1 to 65535' % (url,))
+        broker = parse_mqtt_url(params.get('mqtt_url', DEFAULT_URL))
+    except ValueError as e:
+        raise SettingsError('~mqtt_url ' + str(e))
     prefix = params.get('mqtt_prefix', DEFAULT_PREFIX)
     if not isinstance(prefix, str) or any(c in prefix for c in '+#\0'):
         raise SettingsError('~mqtt_prefix %r: a topic prefix without +, # or NUL' % (prefix,))
@@ -68,7 +64,7 @@ def parse_settings(params, resolve, default_robot):
     robot = params.get('robot', default_robot)
     if not isinstance(robot, str) or not robot:
         raise SettingsError('~robot must be a non-empty name, not %r' % (robot,))
-    return Settings(robot=robot, host=parsed.hostname, port=port, tls=tls, prefix=prefix,
+    return Settings(robot=robot, host=broker.host, port=broker.port, tls=broker.tls, prefix=prefix,
                     username=str(params.get('mqtt_username', '')),
                     password_file=str(params.get('mqtt_password_file', '')),
                     ca_file=str(params.get('mqtt_ca_file', '')), send=send, receive=receive,

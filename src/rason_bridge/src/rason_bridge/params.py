@@ -12,6 +12,7 @@ import os
 import re
 
 from rason_bridge.fleet_auth import OFF, REQUIRED, default_key_file
+from rason_bridge.mqtt_url import parse_mqtt_url
 from rason_bridge.trust import trust_rules
 
 #: An agent name: a Jason atom.
@@ -143,8 +144,9 @@ def _paths(param, value):
 
 
 def _mqtt_url(param, value):
-    if not isinstance(value, str) or not (value.startswith('tcp://') or value.startswith('ssl://')) \
-            or len(value) <= len('tcp://'):
+    try:
+        parse_mqtt_url(value)
+    except ValueError:
         param.refuse(value)
     return value
 
