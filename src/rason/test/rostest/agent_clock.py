@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Under /use_sim_time the agents' Jason timing follows /clock: a .wait(2000) lasts 2 s of
 ROS time and a .wait(Event, 1000) times out after 1 s of it, with the clock (this test)
-running at half the wall clock's pace."""
+running at half the wall clock's pace; a clock that stands still is said, and its return."""
 import os
 import re
 import sys
@@ -22,22 +22,29 @@ START = 1.0         # s, the first ROS time published
 
 
 class TestAgentClock(unittest.TestCase):
+    last_now = START    # the tests share one rason_mas: the clock goes on from where one left it
 
     def setUp(self):
-        self.now = START
+        self.now = TestAgentClock.last_now
         self.heard = {}  # what the agent said -> the ROS time it read then, s
         self.lock = threading.Lock()
-        self.stop = threading.Event()
-        clock = rospy.Publisher('/clock', Clock, queue_size=1)
+        self.clock = rospy.Publisher('/clock', Clock, queue_size=1)
         # the clock runs before anything else, as a simulator's does
-        threading.Thread(target=self._run_clock, args=(clock,), daemon=True).start()
+        self.stop = self._start_clock()
         rospy.Subscriber('/rosout', Log, self._on_log, queue_size=None)
 
     def tearDown(self):
         self.stop.set()
+        with self.lock:
+            TestAgentClock.last_now = self.now
 
-    def _run_clock(self, pub):
-        while not self.stop.is_set():
+    def _start_clock(self):
+        stop = threading.Event()
+        threading.Thread(target=self._run_clock, args=(self.clock, stop), daemon=True).start()
+        return stop
+
+    def _run_clock(self, pub, stop):
+        while not stop.is_set():
             with self.lock:
                 self.now += STEP
                 now = self.now
@@ -67,6 +74,18 @@ class TestAgentClock(unittest.TestCase):
         self.assertGreaterEqual(waited, 1.0 - 1e-6, heard)
         self.assertLess(waited, 1.3, heard)
         self.assertNotIn('ready', heard)
+
+    def test_when_the_clock_stands_still_it_is_said_and_so_is_its_return(self):
+        log = LogWatcher()
+        self.assertTrue(log.wait_ready(20), 'not connected to every /rosout publisher')
+        self.stop.set()
+        # (rason_mas may start watching the clock only now: then it has heard none)
+        self.assertTrue(log.wait_for(r'^/clock has not moved for \d+ s \((simulated time stands at [\d.]+ s|no /clock '
+                                     r'heard since the start)\): under /use_sim_time the agents', timeout=30),
+                        'rason_mas did not say that the clock stands still')
+        self.stop = self._start_clock()
+        self.assertTrue(log.wait_for(r"^/clock moves again: the agents' waits and timeouts go on$", timeout=10),
+                        'rason_mas did not say that the clock moves again')
 
 
 if __name__ == '__main__':

@@ -1,9 +1,13 @@
 """ROS -> agents: the subscriptions of rason_mas, each message handed to Java as it comes
 (rospy plumbing; parsing and checking are Java's)."""
+import threading
+import time
+
 import rospy
 from rason_msgs.msg import AgentMessage, Event, Perception, Presence, Pulse
 from rosgraph_msgs.msg import Clock
 
+from rason_bridge.clock_watch import ClockWatch
 from rason_bridge.fleet_auth import to_int64
 from rason_bridge.ros_links import publisher
 
@@ -49,11 +53,23 @@ class Inbound(object):
             rospy.logerr('the agents keep the wall clock for .wait and timeouts: %s', e.getMessage())
             return
         if sim_time:
+            self._clock_watch = ClockWatch()
             rospy.Subscriber('/clock', Clock, self._on_clock, queue_size=1, tcp_nodelay=True)
             rospy.loginfo('agents on ROS time: .wait and Jason timeouts follow /clock')
+            threading.Thread(target=self._watch_clock, name='rason_clock_watch', daemon=True).start()
 
     def _on_clock(self, msg):
-        self._bridge.clockAdvanced(msg.clock.to_nsec())
+        now = msg.clock.to_nsec()
+        self._clock_watch.heard(now)
+        self._bridge.clockAdvanced(now)
+
+    def _watch_clock(self):
+        # on the wall clock: rospy's timers stand still with /clock
+        while not rospy.is_shutdown():
+            time.sleep(1.0)
+            line = self._clock_watch.due()
+            if line:
+                rospy.logwarn('%s', line)
 
     def _on_perception(self, msg):
         self._perceptions.put(msg.source, msg.perception, self._now_ns())
