@@ -1,0 +1,174 @@
+package rason.casestudy;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static rason.bridge.RunningAgents.believes;
+
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.BooleanSupplier;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
+import org.junit.jupiter.api.io.TempDir;
+
+import jason.runtime.RuntimeServicesFactory;
+import rason.bridge.Bridge;
+import rason.bridge.Outbound;
+import rason.bridge.RunningAgents;
+import rason.casestudy.FleetWorld.Robot;
+
+/**
+ * The case study as one fleet program (agents/fleet/fleet_robot.asl) on real Jason: every
+ * robot's agent runs the same file, each perceiving its own robot in a small world the test
+ * runs ({@link FleetWorld}). A robot whose moves fail asks the robots with a camera to watch it
+ * by contract net; the cheapest bidder is awarded and the two run the case study's dialogue to
+ * the diagnosis.
+ */
+class FleetCaseStudyTest {
+
+    private static final Path FLEET_ROBOT = Path.of("..", "src", "rason", "agents", "fleet", "fleet_robot.asl")
+            .toAbsolutePath().normalize();
+    /** ms for a whole diagnosis (contract net, search, tracking, the move, the report). */
+    private static final long DIAGNOSIS_MS = 30_000;
+
+    private final Bridge bridge = new Bridge();
+    @RegisterExtension
+    final RunningAgents agents = new RunningAgents(bridge);
+    @TempDir
+    Path dir;
+    private FleetWorld world;
+
+    @AfterEach
+    void stopWorld() throws Exception {
+        if (world != null) {
+            world.close();
+            if (System.getenv("FLEET_TRANSCRIPT") != null)
+                java.nio.file.Files.writeString(Path.of(System.getenv("FLEET_TRANSCRIPT")), world.transcript(),
+                        java.nio.file.StandardOpenOption.CREATE, java.nio.file.StandardOpenOption.APPEND);
+        }
+    }
+
+    /**
+     * Every robot runs the fleet program; the faulty robots' moves are held until every other
+     * robot ended its mission (and, with a camera, offers to watch), so that the calls find them
+     * free.
+     */
+    private void start(Robot... robots) throws Exception {
+        Map<String, String> programs = new LinkedHashMap<>();
+        for (Robot r : robots)
+            programs.put(r.name, "{ include(\"" + FLEET_ROBOT + "\") }\n");
+        world = new FleetWorld(bridge, agents, List.of(robots));
+        world.park(a -> !fault(robots, a.agent()).equals("none"));
+        agents.startAll(dir, programs);
+        world.start();
+        for (Robot r : robots) {
+            if (!r.fault.equals("none"))
+                continue;
+            await(r.name + " to end its mission", 10_000, () -> believes(agents.arch(r.name), "diagnosed(none)"));
+            if (r.camera)
+                await(r.name + " to offer to watch", 10_000, () -> believes(agents.arch(r.name), "offering(observe)"));
+        }
+        world.releaseParked();
+    }
+
+    private static String fault(Robot[] robots, String agent) {
+        for (Robot r : robots)
+            if (r.name.equals(agent))
+                return r.fault;
+        return "none";
+    }
+
+    private void await(String what, long ms, BooleanSupplier condition) throws InterruptedException {
+        long deadline = System.currentTimeMillis() + ms;
+        while (!condition.getAsBoolean()) {
+            world.check();
+            if (System.currentTimeMillis() > deadline)
+                throw new AssertionError("timed out waiting for " + what + "; the agents printed:\n" + world.transcript());
+            Thread.sleep(10);
+        }
+    }
+
+    private boolean awarded(String caller, String helper) {
+        return believes(agents.arch(caller), "awarded(_,help(" + caller + ",_)," + helper + ")");
+    }
+
+    private boolean watches(String helper, String caller) {
+        return believes(agents.arch(helper), "committed(_,help(" + caller + ",_)," + caller + ")");
+    }
+
+    private void diagnosed(String caller, String expected) throws InterruptedException {
+        await(caller + "'s diagnosis", DIAGNOSIS_MS, () -> world.diagnosis(caller) != null);
+        assertEquals(expected, world.diagnosis(caller), caller + "'s diagnosis");
+    }
+
+    /** A turn asked by this robot's agent (it searched or centred). */
+    private boolean turned(String robot) {
+        return world.done().stream().anyMatch(a -> a.agent().equals(robot) && a.action().equals("turn"));
+    }
+
+    @Test
+    void theCheapestCameraRobotIsAwardedAndRunsTheDialogueToTheDiagnosis() throws Exception {
+        start(new Robot("f", 0, 0, 0, false, "right_actuator"),
+                new Robot("a", 0, 2, -75, true, "none"),     // sees f 16 degrees off-centre: bids 16
+                new Robot("b", -2, 0, 180, true, "none"),    // has f behind it: a search, 360
+                new Robot("c", 2, 0, 190, true, "none"),     // sees f 10 degrees off-centre: 10
+                new Robot("d", 0, -2, 90, false, "none"));   // no camera: never called
+        await("f to award c", 10_000, () -> awarded("f", "c"));
+        assertTrue(watches("c", "f"));
+        diagnosed("f", "right_actuator");
+        assertTrue(believes(agents.arch("f"), "helpedBy(c)"), "the feedback came from c");
+        assertTrue(turned("c"), "c centred f before tracking it");
+        assertFalse(turned("a") || turned("b") || turned("d"), "nobody else searched");
+        assertFalse(watches("a", "f") || watches("b", "f") || believes(agents.arch("a"), "helping(_)"));
+        await("c to be released", 10_000, () -> !watches("c", "f") && !believes(agents.arch("c"), "helping(_)"));
+        RunningAgents.noInputFor(1500, "the pair's Faulty stops the MAS 1 s after its diagnosis");
+        assertFalse(world.stopAsked(), "no robot stopped the MAS: the others may still need it");
+    }
+
+    @Test
+    void twoRobotsFaultyAtOnceEachGetADifferentHelper() throws Exception {
+        start(new Robot("f1", 0, 0.25, 0, false, "right_actuator"),
+                new Robot("f2", 0, -0.25, 0, false, "both_actuators"),
+                new Robot("a", 2.5, 0, 180, true, "none"),   // sees both 6 degrees off-centre
+                new Robot("b", -2.5, 0, 15, true, "none"));  // sees them 10 and 21 degrees off
+        await("both callers to award a helper", 10_000,
+                () -> (awarded("f1", "a") || awarded("f1", "b")) && (awarded("f2", "a") || awarded("f2", "b")));
+        String first = awarded("f1", "a") ? "a" : "b";
+        String second = awarded("f2", "a") ? "a" : "b";
+        assertNotEquals(first, second, "each caller has a helper of its own");
+        diagnosed("f1", "right_actuator");
+        diagnosed("f2", "both_actuators");
+        assertTrue(believes(agents.arch("f1"), "helpedBy(" + first + ")"));
+        assertTrue(believes(agents.arch("f2"), "helpedBy(" + second + ")"));
+    }
+
+    @Test
+    void theHelperKilledMidHelpIsReplacedByTheNextBidderAndTheDiagnosisIsStillRight() throws Exception {
+        start(new Robot("f", 0, 0, 0, false, "left_actuator"),
+                new Robot("a", 0, 2, -75, true, "none"),     // bids 16
+                new Robot("b", -2, 0, 180, true, "none"),    // 360
+                new Robot("c", 2, 0, 190, true, "none"));    // 10
+        // the move f makes for c to watch (its failed move(1) again, backwards) is held: c
+        // dies while f moves for it
+        world.park(a -> a.agent().equals("f") && a.action().equals("move") && Double.parseDouble(a.parameters()[0]) < 0);
+        await("f to move for c", 10_000, () -> awarded("f", "c") && !world.parked().isEmpty());
+        Outbound.Action watched = world.parked().get(0);
+        long killed = System.nanoTime();
+        assertTrue(RuntimeServicesFactory.get().killAgent("c", "test", 0), "c killed");
+        world.remove("c");
+        await("f to award the next bidder, a", 5_000, () -> awarded("f", "a"));
+        long ms = (System.nanoTime() - killed) / 1_000_000;
+        assertTrue(ms <= 5000, "a was awarded " + ms + " ms after c left");
+        await("the move for c to be taken back", 5_000, () -> world.wasCancelled(watched));
+        world.releaseParked();
+        diagnosed("f", "left_actuator");
+        assertTrue(believes(agents.arch("f"), "helpedBy(a)"), "the feedback came from a");
+        assertFalse(watches("b", "f"), "b was not needed");
+    }
+}
