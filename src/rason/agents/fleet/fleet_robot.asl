@@ -29,7 +29,7 @@ bid(help(C, at(X, Y)), C, B)
      & relative(pose(MX, MY, MT), pose(X, Y, 0), pose(F, L, _))
      & D = math.sqrt(F * F + L * L) & D > 0
      & A = math.acos(F / D) * 180 / math.pi
-     & clockwiseTo(L, A, B).
+     & clockwiseTo(L, A, T) & B = math.round(T * 100) / 100.
 // Neither: a search from where I face.
 bid(help(C, Where), C, B)
     :- canWatch & not robot(C, _, _, _) & not (Where = at(_, _) & mapPose(_, _, _)) & searchCost(B).
@@ -114,11 +114,11 @@ whereIAm(unknown) :- not mapPose(_, _, _).
     .send(C, tell, found(C)).
 
 // Released, revoked, failed (I could not find it) or its caller gone: nothing of C is kept
-// and nothing done for it goes on.
+// and nothing done for it goes on. (The search is carryOut's: the contract net drops it on a
+// revoke; dropping it here would also drop the failure plan that tells the caller.)
 -committed(_, help(C, _), C) <- !stopWatching(C).
 +!stopWatching(C)
-<- .drop_desire(findRobot(C, _));
-    .drop_desire(trackMe);
+<- .drop_desire(trackMe);
     .drop_desire(giveFeedback);
     -helping(C);
     -foundRobot(C, _, _, _);

@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.function.BooleanSupplier;
 
 import org.junit.jupiter.api.AfterEach;
@@ -17,6 +18,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
+import jason.asSemantics.Unifier;
+import jason.asSyntax.ASSyntax;
+import jason.asSyntax.Literal;
+import jason.asSyntax.NumberTerm;
 import jason.runtime.RuntimeServicesFactory;
 import rason.bridge.Bridge;
 import rason.bridge.Outbound;
@@ -60,10 +65,15 @@ class FleetCaseStudyTest {
      * free.
      */
     private void start(Robot... robots) throws Exception {
+        start(1, false, "", robots);
+    }
+
+    /** The same, ROS time running speed times as fast as the wall, with tuning added to the program. */
+    private void start(int speed, boolean sharedFrame, String tuning, Robot... robots) throws Exception {
         Map<String, String> programs = new LinkedHashMap<>();
         for (Robot r : robots)
-            programs.put(r.name, "{ include(\"" + FLEET_ROBOT + "\") }\n");
-        world = new FleetWorld(bridge, agents, List.of(robots));
+            programs.put(r.name, "{ include(\"" + FLEET_ROBOT + "\") }\n" + tuning);
+        world = new FleetWorld(bridge, agents, List.of(robots), speed, sharedFrame);
         world.park(a -> !fault(robots, a.agent()).equals("none"));
         agents.startAll(dir, programs);
         world.start();
@@ -107,6 +117,14 @@ class FleetCaseStudyTest {
         assertEquals(expected, world.diagnosis(caller), caller + "'s diagnosis");
     }
 
+    /** The robot whose feedback the caller's diagnosis used. */
+    private String helper(String caller) {
+        Unifier u = new Unifier();
+        assertTrue(agents.arch(caller).getTS().getAg().believes(Literal.parseLiteral("helpedBy(H)"), u),
+                caller + " had feedback");
+        return u.get("H").toString();
+    }
+
     /** A turn asked by this robot's agent (it searched or centred). */
     private boolean turned(String robot) {
         return world.done().stream().anyMatch(a -> a.agent().equals(robot) && a.action().equals("turn"));
@@ -119,8 +137,7 @@ class FleetCaseStudyTest {
                 new Robot("b", -2, 0, 180, true, "none"),    // has f behind it: a search, 360
                 new Robot("c", 2, 0, 190, true, "none"),     // sees f 10 degrees off-centre: 10
                 new Robot("d", 0, -2, 90, false, "none"));   // no camera: never called
-        await("f to award c", 10_000, () -> awarded("f", "c"));
-        assertTrue(watches("c", "f"));
+        await("c to take the help f awarded it", 10_000, () -> awarded("f", "c") && watches("c", "f"));
         diagnosed("f", "right_actuator");
         assertTrue(believes(agents.arch("f"), "helpedBy(c)"), "the feedback came from c");
         assertTrue(turned("c"), "c centred f before tracking it");
@@ -137,15 +154,12 @@ class FleetCaseStudyTest {
                 new Robot("f2", 0, -0.25, 0, false, "both_actuators"),
                 new Robot("a", 2.5, 0, 180, true, "none"),   // sees both 6 degrees off-centre
                 new Robot("b", -2.5, 0, 15, true, "none"));  // sees them 10 and 21 degrees off
-        await("both callers to award a helper", 10_000,
-                () -> (awarded("f1", "a") || awarded("f1", "b")) && (awarded("f2", "a") || awarded("f2", "b")));
-        String first = awarded("f1", "a") ? "a" : "b";
-        String second = awarded("f2", "a") ? "a" : "b";
-        assertNotEquals(first, second, "each caller has a helper of its own");
         diagnosed("f1", "right_actuator");
         diagnosed("f2", "both_actuators");
-        assertTrue(believes(agents.arch("f1"), "helpedBy(" + first + ")"));
-        assertTrue(believes(agents.arch("f2"), "helpedBy(" + second + ")"));
+        String first = helper("f1");
+        String second = helper("f2");
+        assertTrue(Set.of("a", "b").containsAll(List.of(first, second)), first + " and " + second + " watched");
+        assertNotEquals(first, second, "each caller had a helper of its own");
     }
 
     @Test
@@ -170,5 +184,27 @@ class FleetCaseStudyTest {
         diagnosed("f", "left_actuator");
         assertTrue(believes(agents.arch("f"), "helpedBy(a)"), "the feedback came from a");
         assertFalse(watches("b", "f"), "b was not needed");
+    }
+
+    @Test
+    void aWatcherThatCannotFindTheCallerFailsAndTheNextBidderIsAwarded() throws Exception {
+        // every robot knows its pose in a shared frame; so that a's full search takes seconds,
+        // ROS time runs 10 times as fast as the wall (as the simulator may) and a search turns
+        // 30 degrees a step
+        start(10, true, "!tune.\n+!tune <- -+turnRate(30).\n", new Robot("f", 0, 0, 0, false, "right_actuator"),
+                new Robot("a", 7, 0, 180, true, "none"),     // faces f, too far to see it: bids 0
+                new Robot("b", 0, 2, -75, true, "none"),     // sees f: 16
+                new Robot("c", -2, 0, 180, true, "none"));   // f behind it: a half turn, 180
+        await("f to award a", 10_000, () -> awarded("f", "a"));
+        Unifier u = new Unifier();
+        assertTrue(agents.arch("f").getTS().getAg().believes(
+                ASSyntax.parseLiteral("contract(_,help(f,at(_,_)),[offer(B,b),offer(C,c)])"), u),
+                "the other bids kept ranked: the caller sent where it is, each bid from its own pose");
+        assertEquals(15.6, ((NumberTerm) u.get("B")).solve(), 0.1);
+        assertEquals(180, ((NumberTerm) u.get("C")).solve(), 0.1);
+        await("a to give up its search and f to award b", 20_000, () -> awarded("f", "b"));
+        assertFalse(watches("a", "f") || believes(agents.arch("a"), "helping(_)"), "a forgot f");
+        diagnosed("f", "right_actuator");
+        assertTrue(believes(agents.arch("f"), "helpedBy(b)"), "the feedback came from b");
     }
 }

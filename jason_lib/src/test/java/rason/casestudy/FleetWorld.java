@@ -19,14 +19,16 @@ import rason.core.Protocol;
  * own robot (odometry pos/3, and with a camera, vision_synth's cameraFrame/2 and robot/4 of the
  * robots in view), and the actions done at once: turn and move (a faulty robot's move as its
  * fault makes it, and failed with the reason the motion decomposer gives), report_diagnosis
- * noted. ROS time runs with the wall, one camera frame every 10 ms.
+ * noted. One camera frame every 10 ms of wall time; ROS time runs with the wall, or faster
+ * (as the simulator at rate 0). With a shared frame every robot also perceives mapPose/3, its
+ * pose in the world.
  */
 final class FleetWorld implements AutoCloseable {
 
     static final double HALF_FOV = 28.5;
     /** Degrees an actuator fault turns the robot in one move. */
     static final double FAULT_TURN = 25;
-    private static final long FRAME = 10_000_000L;
+    private static final long FRAME_MS = 10;
 
     /** A robot: pose (x, y, heading counter-clockwise), camera, fault. */
     static final class Robot {
@@ -56,11 +58,19 @@ final class FleetWorld implements AutoCloseable {
     private final StringBuffer transcript = new StringBuffer();
     private volatile boolean running = true;
     private final Thread thread;
+    private final long rosPerFrame;
+    private final boolean sharedFrame;
     private long now = 100 * RunningAgents.SECOND;
     private int frame = 0;
 
-    FleetWorld(Bridge bridge, RunningAgents agents, List<Robot> robots) {
+    /**
+     * @param speed       ROS time per wall time (1: real time)
+     * @param sharedFrame whether the robots perceive their poses in the world (mapPose/3)
+     */
+    FleetWorld(Bridge bridge, RunningAgents agents, List<Robot> robots, int speed, boolean sharedFrame) {
         this.bridge = bridge;
+        this.rosPerFrame = speed * FRAME_MS * 1_000_000L;
+        this.sharedFrame = sharedFrame;
         this.agents = agents;
         for (Robot r : robots)
             this.robots.put(r.name, r);
@@ -166,12 +176,12 @@ final class FleetWorld implements AutoCloseable {
                 for (int i = 0; i < lines.ends().length; i++) // ends count code points
                     transcript.append(text, text.offsetByCodePoints(0, i == 0 ? 0 : lines.ends()[i - 1]),
                             text.offsetByCodePoints(0, lines.ends()[i])).append('\n');
-                now += FRAME;
+                now += rosPerFrame;
                 bridge.tick(now);
                 frame++;
                 for (Robot r : robots.values())
                     perceive(r);
-                Thread.sleep(FRAME / 1_000_000);
+                Thread.sleep(FRAME_MS);
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -189,6 +199,9 @@ final class FleetWorld implements AutoCloseable {
             return;
         double[] p = r.pose;
         agents.perceive(r.name, "odom", now, String.format(Locale.ROOT, "pos(%.3f,%.3f,%.4f)", p[0], p[1], p[2]));
+        if (sharedFrame)
+            agents.perceive(r.name, "localisation", now,
+                    String.format(Locale.ROOT, "mapPose(%.3f,%.3f,%.4f)", p[0], p[1], p[2]));
         if (!r.camera)
             return;
         List<String> seen = new ArrayList<>();
