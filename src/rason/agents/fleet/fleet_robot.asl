@@ -27,13 +27,17 @@ bid(help(C, _), C, B) :- canWatch & robot(C, Deg, _, _) & B = math.abs(Deg).
 bid(help(C, at(X, Y)), C, B)
     :- canWatch & not robot(C, _, _, _) & mapPose(MX, MY, MT)
      & relative(pose(MX, MY, MT), pose(X, Y, 0), pose(F, L, _))
-     & D = math.sqrt(F * F + L * L) & D > 0
-     & A = math.acos(F / D) * 180 / math.pi
+     & D = math.sqrt(F * F + L * L) & D > 0 & Ratio = F / D & cosine(Ratio, Cos)
+     & A = math.acos(Cos) * 180 / math.pi
      & clockwiseTo(L, A, T) & B = math.round(T * 100) / 100.
 // Neither: a search from where I face.
 bid(help(C, Where), C, B)
     :- canWatch & not robot(C, _, _, _) & not (Where = at(_, _) & mapPose(_, _, _)) & searchCost(B).
 
+// A ratio that rounding may have put just outside [-1, 1], as a cosine.
+cosine(R, 1) :- R > 1.
+cosine(R, -1) :- R < -1.
+cosine(R, R) :- R >= -1 & R <= 1.
 clockwiseTo(Left, A, A) :- Left <= 0.
 clockwiseTo(Left, A, B) :- Left > 0 & B = 360 - A.
 

@@ -61,8 +61,8 @@ class FleetCaseStudyTest {
 
     /**
      * Every robot runs the fleet program; the faulty robots' moves are held until every other
-     * robot ended its mission (and, with a camera, offers to watch), so that the calls find them
-     * free.
+     * robot ended its mission (and, with a camera, offers to watch and has seen a camera frame
+     * taken since), so that the calls find them free and their bids are from where they stand.
      */
     private void start(Robot... robots) throws Exception {
         start(1, false, "", robots);
@@ -84,6 +84,11 @@ class FleetCaseStudyTest {
             if (r.camera)
                 await(r.name + " to offer to watch", 10_000, () -> believes(agents.arch(r.name), "offering(observe)"));
         }
+        int framesBefore = world.frame();
+        for (Robot r : robots)
+            if (r.camera)
+                await(r.name + " to see a frame taken after the missions", 10_000,
+                        () -> holds(r.name, "cameraFrame(N,_) & N > " + framesBefore));
         world.releaseParked();
     }
 
@@ -101,6 +106,14 @@ class FleetCaseStudyTest {
             if (System.currentTimeMillis() > deadline)
                 throw new AssertionError("timed out waiting for " + what + "; the agents printed:\n" + world.transcript());
             Thread.sleep(10);
+        }
+    }
+
+    private boolean holds(String agent, String formula) {
+        try {
+            return agents.arch(agent).getTS().getAg().believes(ASSyntax.parseFormula(formula), new Unifier());
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
         }
     }
 

@@ -19,7 +19,8 @@ import rason.core.Protocol;
  * own robot (odometry pos/3, and with a camera, vision_synth's cameraFrame/2 and robot/4 of the
  * robots in view), and the actions done at once: turn and move (a faulty robot's move as its
  * fault makes it, and failed with the reason the motion decomposer gives), report_diagnosis
- * noted. One camera frame every 10 ms of wall time; ROS time runs with the wall, or faster
+ * noted. The world steps every 10 ms of wall time, a camera frame every 5 steps (20 Hz, a
+ * Kinect's rate is 30); ROS time runs with the wall, or faster
  * (as the simulator at rate 0). With a shared frame every robot also perceives mapPose/3, its
  * pose in the world.
  */
@@ -28,7 +29,7 @@ final class FleetWorld implements AutoCloseable {
     static final double HALF_FOV = 28.5;
     /** Degrees an actuator fault turns the robot in one move. */
     static final double FAULT_TURN = 25;
-    private static final long FRAME_MS = 10;
+    private static final long STEP_MS = 10;
 
     /** A robot: pose (x, y, heading counter-clockwise), camera, fault. */
     static final class Robot {
@@ -58,9 +59,12 @@ final class FleetWorld implements AutoCloseable {
     private final StringBuffer transcript = new StringBuffer();
     private volatile boolean running = true;
     private final Thread thread;
-    private final long rosPerFrame;
+    private final long rosPerStep;
     private final boolean sharedFrame;
-    private long now = 100 * RunningAgents.SECOND;
+    private static final long START = 100 * RunningAgents.SECOND;
+    private long now = START;
+    private static final int STEPS_PER_FRAME = 5;
+    private int step = 0;
     private int frame = 0;
 
     /**
@@ -69,7 +73,7 @@ final class FleetWorld implements AutoCloseable {
      */
     FleetWorld(Bridge bridge, RunningAgents agents, List<Robot> robots, int speed, boolean sharedFrame) {
         this.bridge = bridge;
-        this.rosPerFrame = speed * FRAME_MS * 1_000_000L;
+        this.rosPerStep = speed * STEP_MS * 1_000_000L;
         this.sharedFrame = sharedFrame;
         this.agents = agents;
         for (Robot r : robots)
@@ -123,9 +127,14 @@ final class FleetWorld implements AutoCloseable {
         return diagnoses.get(name);
     }
 
-    /** What the agents printed so far, one line each. */
+    /** What the agents printed so far, one line each, after the ROS time (s since the start). */
     String transcript() {
         return transcript.toString();
+    }
+
+    /** The number of the last camera frame. */
+    synchronized int frame() {
+        return frame;
     }
 
     /** An agent ran .stopMAS. */
@@ -174,14 +183,19 @@ final class FleetWorld implements AutoCloseable {
                 LogQueue.Batch lines = bridge.log().drainBatch(1000);
                 String text = lines.text();
                 for (int i = 0; i < lines.ends().length; i++) // ends count code points
-                    transcript.append(text, text.offsetByCodePoints(0, i == 0 ? 0 : lines.ends()[i - 1]),
+                    transcript.append(String.format(Locale.ROOT, "%7.2f ", (now - START) / 1e9))
+                            .append(text, text.offsetByCodePoints(0, i == 0 ? 0 : lines.ends()[i - 1]),
                             text.offsetByCodePoints(0, lines.ends()[i])).append('\n');
-                now += rosPerFrame;
+                now += rosPerStep;
                 bridge.tick(now);
-                frame++;
+                boolean cameras = step++ % STEPS_PER_FRAME == 0;
+                if (cameras)
+                    synchronized (this) {
+                        frame++;
+                    }
                 for (Robot r : robots.values())
-                    perceive(r);
-                Thread.sleep(FRAME_MS);
+                    perceive(r, cameras);
+                Thread.sleep(STEP_MS);
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -194,7 +208,7 @@ final class FleetWorld implements AutoCloseable {
         return agent + "#" + id;
     }
 
-    private void perceive(Robot r) {
+    private void perceive(Robot r, boolean camera) {
         if (agents.arch(r.name) == null)
             return;
         double[] p = r.pose;
@@ -202,10 +216,10 @@ final class FleetWorld implements AutoCloseable {
         if (sharedFrame)
             agents.perceive(r.name, "localisation", now,
                     String.format(Locale.ROOT, "mapPose(%.3f,%.3f,%.4f)", p[0], p[1], p[2]));
-        if (!r.camera)
+        if (!r.camera || !camera)
             return;
         List<String> seen = new ArrayList<>();
-        seen.add("cameraFrame(" + frame + "," + now / 1_000_000 + ")");
+        seen.add("cameraFrame(" + frame() + "," + now / 1_000_000 + ")");
         for (Robot other : robots.values()) {
             if (other == r)
                 continue;
