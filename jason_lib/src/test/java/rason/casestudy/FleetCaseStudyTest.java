@@ -27,6 +27,7 @@ import rason.bridge.Bridge;
 import rason.bridge.Outbound;
 import rason.bridge.RunningAgents;
 import rason.casestudy.FleetWorld.Robot;
+import rason.infra.RasonLocalMAS;
 
 /**
  * The case study as one fleet program (agents/fleet/fleet_robot.asl) on real Jason: every
@@ -191,6 +192,7 @@ class FleetCaseStudyTest {
         world.remove("c");
         await("f to award the next bidder, a", 5_000, () -> awarded("f", "a"));
         long ms = (System.nanoTime() - killed) / 1_000_000;
+        world.note("a was awarded " + ms + " ms after c left");
         assertTrue(ms <= 5000, "a was awarded " + ms + " ms after c left");
         await("the move for c to be taken back", 5_000, () -> world.wasCancelled(watched));
         world.releaseParked();
@@ -219,5 +221,25 @@ class FleetCaseStudyTest {
         assertFalse(watches("a", "f") || believes(agents.arch("a"), "helping(_)"), "a forgot f");
         diagnosed("f", "right_actuator");
         assertTrue(believes(agents.arch("f"), "helpedBy(b)"), "the feedback came from b");
+    }
+
+    @Test
+    void theFleetsMas2jRunsTheProgramUnderEachRobotsPrefix() throws Exception {
+        Path mas2j = FLEET_ROBOT.resolveSibling("fleet_robot.mas2j");
+        bridge.attach();
+        RasonLocalMAS mas = bridge.newMas();
+        try {
+            mas.setAgentPrefix("r1_");
+            mas.load(mas2j.toString());
+            mas.create();
+            var robot = mas.getAg("r1_robot");
+            assertTrue(robot != null, "the agent named by the robot's prefix");
+            String plans = robot.getTS().getAg().getPL().getAsTxt(false);
+            for (String plan : List.of("+!contract(", "+!carryOut(help(", "+!tryMove", "+!findRobot(", "+!sendSafely("))
+                assertTrue(plans.contains(plan), "the included files' plans: " + plan);
+        } finally {
+            assertTrue(mas.stopAgents(5000));
+            bridge.detach();
+        }
     }
 }

@@ -132,6 +132,11 @@ final class FleetWorld implements AutoCloseable {
         return transcript.toString();
     }
 
+    /** A line of the test's own in the transcript. */
+    void note(String line) {
+        transcript.append("        [test] ").append(line).append('\n');
+    }
+
     /** The number of the last camera frame. */
     synchronized int frame() {
         return frame;
