@@ -9,6 +9,11 @@
 // found(R). It needs !sendSafely (send_safely.asl).
 
 /* Initial beliefs and rules */
+
+// Where the camera sees robot R now (vision_synth's robot/4). A program whose camera names
+// robots otherwise than their agents adds a clause (agents/fleet/fleet_robot.asl).
+inView(R, Deg, Depth, Yaw) :- robot(R, Deg, Depth, Yaw).
+
 turnRate(10).          // IMPROVED: 10 degrees a step (the thesis used 5), still well
                        // inside the camera's 57 degrees
 centerThreshold(7).
@@ -92,7 +97,7 @@ halfTurn(D, D) :- D > -180 & D <= 180.
   .fail.
 
 +!findRobot(Robot,Turned)
-: robot(Robot,Deg,Depth,Yaw)
+: inView(Robot,Deg,Depth,Yaw)
 & centerThreshold(DT)
 & (math.abs(Deg) >= DT)
 & centringTurnsSoFar(N) & maxCentringTurns(M) & N >= M
@@ -100,7 +105,7 @@ halfTurn(D, D) :- D > -180 & D <= 180.
   .fail.
 
 +!findRobot(Robot,Turned)
-: robot(Robot,Deg,Depth,Yaw)
+: inView(Robot,Deg,Depth,Yaw)
 & centerThreshold(DT)
 & (math.abs(Deg) >= DT)
 <- .print("Found ",Robot,", but I need to reposition myself...");
@@ -111,7 +116,7 @@ halfTurn(D, D) :- D > -180 & D <= 180.
   !findRobot(Robot,Turned+Deg).
 
 +!findRobot(Robot,Turned)
-: robot(Robot,Deg,Depth,Yaw)
+: inView(Robot,Deg,Depth,Yaw)
 & centerThreshold(DT)
 & math.abs(Deg) < DT
 <- .print("Found ",Robot);
@@ -216,9 +221,9 @@ halfTurn(D, D) :- D > -180 & D <= 180.
 // Turned: how far (degrees, clockwise) I turned to keep R inside the view, at most
 // maxViewTurns turns: towards R when it is seen near the edge, towards where it was
 // last seen when it went out of the view there. Otherwise, no turn.
-+!keepInView(R,N,0) : robot(R,D,_,_) & edgeMargin(M) & math.abs(D) < M <- true.
++!keepInView(R,N,0) : inView(R,D,_,_) & edgeMargin(M) & math.abs(D) < M <- true.
 +!keepInView(R,N,0) : maxViewTurns(K) & N >= K <- true.
-+!keepInView(R,N,Turned) : robot(R,D,_,_)
++!keepInView(R,N,Turned) : inView(R,D,_,_)
 <- .print(R, " is near the edge of my view (", D, " degrees); I turn to it");
   !turnedBy(D,A);
   !keepInView(R,N+1,T);
@@ -255,14 +260,14 @@ halfTurn(D, D) :- D > -180 & D <= 180.
 <- .print("My view of ", R, " did not settle");
   .fail.
 +!steadyView(R,Deg,Depth,Yaw,N)
-: robot(R,D0,P0,Y0)
+: inView(R,D0,P0,Y0)
 & cameraFrame(_,S0)
 & settleTime(T)
 & frameTimeout(W)
 <- .wait(cameraFrame(_,S1) & S1 >= S0 + T, T + W);
   !steadyRead(R,D0,P0,Y0,Deg,Depth,Yaw,N).
 +!steadyView(R,Deg,Depth,Yaw,N)
-: robot(R,D0,P0,Y0)
+: inView(R,D0,P0,Y0)
 & settleTime(T)
 <- .wait(T);
   !steadyRead(R,D0,P0,Y0,Deg,Depth,Yaw,N).
@@ -273,7 +278,7 @@ halfTurn(D, D) :- D > -180 & D <= 180.
 
 // The second read: steady with the first (D0, P0, Y0), or one more try.
 +!steadyRead(R,D0,P0,Y0,Deg,Depth,Yaw,N)
-: robot(R,D1,P1,Y1) & steady(D0,P0,Y0,D1,P1,Y1)
+: inView(R,D1,P1,Y1) & steady(D0,P0,Y0,D1,P1,Y1)
 <- Deg = D1; Depth = P1; Yaw = Y1.
 +!steadyRead(R,D0,P0,Y0,Deg,Depth,Yaw,N)
 <- !steadyView(R,Deg,Depth,Yaw,N+1).

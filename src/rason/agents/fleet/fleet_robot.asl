@@ -15,24 +15,36 @@
 callAgain(2000).       // ms before a caller that nobody could help calls again (within helpTimeout)
 searchCost(360).       // the bid of a robot that must search for the caller: a full turn at worst
 
+/* Which robot the camera sees */
+
+// The camera may name a robot as the simulator's world does (vision_synth with fleet.yaml:
+// r1), while its agent is r1_robot (the robot's ~agent_prefix r1_, and this program's agent,
+// robot): a robot is looked for under its agent's name (helper_dialogue.asl's inView/4)
+// and under that one.
+inView(A, Deg, Depth, Yaw) :- cameraName(A, N) & robot(N, Deg, Depth, Yaw).
+cameraName(A, N)
+    :- .term2string(A, S) & .length(S, L) & L > 6
+     & .substring("_robot", S, P) & P == L - 6
+     & .substring(Prefix, S, 0, P) & .term2string(N, Prefix).
+
 /* Bids: lower is better, in degrees I would turn before my camera faces the caller */
 
 // I watch others only once my own mission ended without a fault.
 canWatch :- diagnosed(none).
 
 // Seen now: the camera's angle to it.
-bid(help(C, _), C, B) :- canWatch & robot(C, Deg, _, _) & B = math.abs(Deg).
+bid(help(C, _), C, B) :- canWatch & inView(C, Deg, _, _) & B = math.abs(Deg).
 // Not seen, but both poses known in a frame every robot shares (mapPose/3): the clockwise
 // turn (the search turns clockwise) that faces it.
 bid(help(C, at(X, Y)), C, B)
-    :- canWatch & not robot(C, _, _, _) & mapPose(MX, MY, MT)
+    :- canWatch & not inView(C, _, _, _) & mapPose(MX, MY, MT)
      & relative(pose(MX, MY, MT), pose(X, Y, 0), pose(F, L, _))
      & D = math.sqrt(F * F + L * L) & D > 0 & Ratio = F / D & cosine(Ratio, Cos)
      & A = math.acos(Cos) * 180 / math.pi
      & clockwiseTo(L, A, T) & B = math.round(T * 100) / 100.
 // Neither: a search from where I face.
 bid(help(C, Where), C, B)
-    :- canWatch & not robot(C, _, _, _) & not (Where = at(_, _) & mapPose(_, _, _)) & searchCost(B).
+    :- canWatch & not inView(C, _, _, _) & not (Where = at(_, _) & mapPose(_, _, _)) & searchCost(B).
 
 // A ratio that rounding may have put just outside [-1, 1], as a cosine.
 cosine(R, 1) :- R > 1.
@@ -116,6 +128,10 @@ whereIAm(unknown) :- not mapPose(_, _, _).
     !findRobot(C, 0);
     .print("helper ready.");
     .send(C, tell, found(C)).
+
+// Where the robot I watch was seen last (helper_dialogue.asl notes it for a camera that names
+// it as its agent is named).
++robot(N, D, _, _) : helping(R) & cameraName(R, N) <- -+lastSeen(R, D).
 
 // Released, revoked, failed (I could not find it) or its caller gone: nothing of C is kept
 // and nothing done for it goes on. (The search is carryOut's: the contract net drops it on a

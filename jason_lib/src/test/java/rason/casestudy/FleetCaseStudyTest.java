@@ -224,6 +224,19 @@ class FleetCaseStudyTest {
     }
 
     @Test
+    void aCameraThatNamesRobotsAsTheWorldDoesStillFindsTheCaller() throws Exception {
+        // fleet.launch's vision_synth reports the robot r1, whose agent is r1_robot
+        start(new Robot("r1_robot", 0, 0, 0, false, "both_actuators", "r1"),
+                new Robot("r2_robot", 0, 2, -75, true, "none", "r2"),
+                new Robot("r3_robot", 2, 0, 190, true, "none", "r3"));
+        await("r3_robot, which sees r1 closer to the centre, to take the help", 10_000,
+                () -> awarded("r1_robot", "r3_robot") && watches("r3_robot", "r1_robot"));
+        diagnosed("r1_robot", "both_actuators");
+        assertTrue(believes(agents.arch("r1_robot"), "helpedBy(r3_robot)"));
+        assertTrue(turned("r3_robot"), "r3_robot centred r1 before tracking it");
+    }
+
+    @Test
     void theFleetsMas2jRunsTheProgramUnderEachRobotsPrefix() throws Exception {
         Path mas2j = FLEET_ROBOT.resolveSibling("fleet_robot.mas2j");
         bridge.attach();

@@ -31,18 +31,27 @@ final class FleetWorld implements AutoCloseable {
     static final double FAULT_TURN = 25;
     private static final long STEP_MS = 10;
 
-    /** A robot: pose (x, y, heading counter-clockwise), camera, fault. */
+    /**
+     * A robot: its agent's name, pose (x, y, heading counter-clockwise), camera, fault, and the
+     * name the cameras see it by (its agent's, unless told).
+     */
     static final class Robot {
         final String name;
         final double[] pose;
         final boolean camera;
         final String fault;
+        final String seenAs;
 
         Robot(String name, double x, double y, double headingDeg, boolean camera, String fault) {
+            this(name, x, y, headingDeg, camera, fault, name);
+        }
+
+        Robot(String name, double x, double y, double headingDeg, boolean camera, String fault, String seenAs) {
             this.name = name;
             this.pose = new double[] { x, y, Math.toRadians(headingDeg) };
             this.camera = camera;
             this.fault = fault;
+            this.seenAs = seenAs;
         }
     }
 
@@ -230,7 +239,7 @@ final class FleetWorld implements AutoCloseable {
                 continue;
             double[] v = CameraFrames.view(p, other.pose);
             if (v[1] > 0.2 && v[1] < 6 && Math.abs(v[0]) < HALF_FOV)
-                seen.add(String.format(Locale.ROOT, "robot(%s,%.2f,%.3f,%.2f)", other.name, v[0], v[1], v[2]));
+                seen.add(String.format(Locale.ROOT, "robot(%s,%.2f,%.3f,%.2f)", other.seenAs, v[0], v[1], v[2]));
         }
         agents.perceive(r.name, "vision_synth_robots", now, seen.toArray(String[]::new));
     }
