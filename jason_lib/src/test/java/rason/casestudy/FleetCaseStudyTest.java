@@ -34,7 +34,8 @@ import rason.infra.RasonLocalMAS;
  * robot's agent runs the same file, each perceiving its own robot in a small world the test
  * runs ({@link FleetWorld}). A robot whose moves fail asks the robots with a camera to watch it
  * by contract net; the cheapest bidder is awarded and the two run the case study's dialogue to
- * the diagnosis.
+ * the diagnosis. A timed-out wait shows what the agents printed; with the environment variable
+ * FLEET_TRANSCRIPT=file every test appends it there.
  */
 class FleetCaseStudyTest {
 
