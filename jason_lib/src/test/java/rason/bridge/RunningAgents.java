@@ -85,6 +85,16 @@ public final class RunningAgents implements AfterEachCallback {
         return la == null ? null : RosAgArch.of(la.getTS());
     }
 
+    /**
+     * What source perceives now for this agent only (a robot of a fleet perceives its own
+     * sensors); {@code bridge.perception().perceive} gives every hosted agent the same.
+     */
+    public void perceive(String agent, String source, long nowNanos, String... literals) {
+        RosAgArch a = arch(agent);
+        assertNotNull(a, "agent " + agent + " runs");
+        rason.perception.OneAgentPerception.perceive(a.perception(), source, nowNanos, literals);
+    }
+
     /** The MAS of the agents started last. */
     public RasonLocalMAS mas() {
         return mas;

@@ -1,0 +1,95 @@
+package rason.casestudy;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
+import org.junit.jupiter.api.io.TempDir;
+
+import jason.asSemantics.Unifier;
+import jason.asSyntax.Literal;
+import jason.asSyntax.NumberTerm;
+import rason.RosAgArch;
+import rason.bridge.Bridge;
+import rason.bridge.RunningAgents;
+
+/**
+ * What a robot of the fleet program bids to watch a caller (agents/fleet/fleet_robot.asl, the
+ * rule bid/3): degrees to turn before its camera faces the caller, from the camera when it sees
+ * the caller, else from both poses in a shared frame, else a full search; nothing while its
+ * own mission has not ended without a fault. Real Jason on the program's file.
+ */
+class FleetBidsTest {
+
+    private static final Path FLEET_ROBOT = Path.of("..", "src", "rason", "agents", "fleet", "fleet_robot.asl")
+            .toAbsolutePath().normalize();
+
+    private final Bridge bridge = new Bridge();
+    @RegisterExtension
+    final RunningAgents agents = new RunningAgents(bridge);
+    @TempDir
+    Path dir;
+    private long now = 100 * RunningAgents.SECOND;
+
+    private RosAgArch watcher(String... perceptions) throws Exception {
+        RosAgArch arch = agents.start(dir, "w", "{ include(\"" + FLEET_ROBOT + "\") }\n");
+        perceive(perceptions);
+        return arch;
+    }
+
+    private void perceive(String... literals) throws InterruptedException {
+        now += RunningAgents.SECOND / 10;
+        bridge.tick(now);
+        bridge.perception().perceive("test", literals, now);
+        RosAgArch arch = agents.arch("w");
+        RunningAgents.await("the perceptions to be beliefs",
+                () -> java.util.Arrays.stream(literals).allMatch(l -> RunningAgents.believes(arch, l)));
+    }
+
+    /** The bid for task, null if none. */
+    private static Double bid(RosAgArch arch, String task) throws Exception {
+        Unifier u = new Unifier();
+        if (!arch.getTS().getAg().believes(Literal.parseLiteral("bid(" + task + ",f,B)"), u))
+            return null;
+        return ((NumberTerm) u.get("B")).solve();
+    }
+
+    @Test
+    void theTurnToFaceTheCallerInTheSharedFrameClockwise() throws Exception {
+        RosAgArch w = watcher("diagnosed(none)", "mapPose(1,1,0)"); // at (1, 1), facing +x
+        assertEquals(0, bid(w, "help(f,at(3,1))"), 0.01, "ahead");
+        assertEquals(90, bid(w, "help(f,at(1,0))"), 0.01, "on my right: a quarter turn clockwise");
+        assertEquals(270, bid(w, "help(f,at(1,2))"), 0.01, "on my left: the search turns clockwise");
+        assertEquals(180, bid(w, "help(f,at(0,1))"), 0.01, "behind");
+        assertEquals(45, bid(w, "help(f,at(2,0))"), 0.01);
+    }
+
+    @Test
+    void aCallerInViewCostsItsAngleInTheCamera() throws Exception {
+        RosAgArch w = watcher("diagnosed(none)", "mapPose(1,1,0)", "robot(f,-12.5,2.0,30)");
+        assertEquals(12.5, bid(w, "help(f,at(1,2))"), 0.01, "the camera, not the shared frame");
+        assertEquals(12.5, bid(w, "help(f,unknown)"), 0.01);
+    }
+
+    @Test
+    void withoutEitherAFullSearch() throws Exception {
+        RosAgArch w = watcher("diagnosed(none)");
+        assertEquals(360, bid(w, "help(f,unknown)"), 0.01);
+        assertEquals(360, bid(w, "help(f,at(3,1))"), 0.01, "the caller's pose, but not mine");
+    }
+
+    @Test
+    void aRobotOnItsMissionOrFaultyDoesNotBid() throws Exception {
+        RosAgArch w = watcher("robot(f,3.0,2.0,30)");
+        assertTrue(RunningAgents.believes(w, "robot(f,3.0,2.0,30)"));
+        assertEquals(null, bid(w, "help(f,unknown)"), "its own mission not ended");
+        perceive("diagnosed(left_actuator)", "robot(f,3.0,2.0,30)");
+        assertEquals(null, bid(w, "help(f,unknown)"), "faulty itself");
+        perceive("diagnosed(none)", "robot(f,3.0,2.0,30)");
+        assertFalse(bid(w, "help(f,unknown)") == null, "free");
+    }
+}
