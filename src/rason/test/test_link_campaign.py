@@ -12,7 +12,7 @@ from rason_hosts.link_campaign import (CLEAN, DELAYS_MS, FAULTS, HELP_TIMEOUT_S,
                                        report, save)
 from rason_hosts.link_figures import links_figure, loss_columns
 
-FAULTY_ASL = os.path.join(os.path.dirname(__file__), '..', 'agents', 'case_study', 'faulty.asl')
+FAULTY_ASL = os.path.join(os.path.dirname(__file__), '..', 'agents', 'case_study', 'faulty_dialogue.asl')
 
 
 def test_the_plan_is_drawn_from_the_seed_with_every_fault_in_turn():

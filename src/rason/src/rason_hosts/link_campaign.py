@@ -19,7 +19,7 @@ PARTITION_SECONDS = (1.0, 10.0)     # how long Helper's link is cut
 PARTITION_AFTER = (0.0, 6.0)        # s after Helper's search began
 MISSION_TOLERANCE = 0.15            # m: the mission's judge (as the fault-tolerance rostests')
 CLEAN = {'loss': 0, 'delay_ms': 0, 'partition': None}
-HELP_TIMEOUT_S = 120                # Faulty's helpTimeout (faulty.asl): a cut longer than this
+HELP_TIMEOUT_S = 120                # Faulty's helpTimeout (faulty_dialogue.asl): a cut longer than this
                                     # ends the mission by design; such runs are counted apart
 MISSION_GOAL = 0.95                 # missions completed on drawn links, of those counted
 CUT_BANDS = (('no cut', 0), ('cut up to 5 s', 5), ('cut over 5 s', HELP_TIMEOUT_S))   # name, up to s
