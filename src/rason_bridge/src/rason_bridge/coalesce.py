@@ -164,25 +164,32 @@ def _short(text, limit=60):
 
 
 class FloodEnd(object):
-    """Tells when a flood is over: messages were overtaken (the node fell behind), and then
-    none for ``quiet`` s. Fed the coalescer's :meth:`~PerceptionCoalescer.overtaken` count
-    and the time; no threads of its own.
+    """Tells when a flood is over: at least ``least`` messages were overtaken (the node fell
+    behind) with less than ``quiet`` s between one and the next, and then none for ``quiet``
+    s. Fed the coalescer's :meth:`~PerceptionCoalescer.overtaken` count and the time; no
+    threads of its own.
 
     :param quiet: seconds without an overtaken message that end a flood
+    :param least: overtaken messages that make a flood; fewer are a node that fell behind for
+        a moment (a busy machine), not one whose heap a flood grew
     """
 
-    def __init__(self, quiet=1.0):
+    def __init__(self, quiet=1.0, least=1):
         self.quiet = quiet
+        self.least = least
         self._count = 0
+        self._start = 0  # the count when the flood began
         self._last = None  # when an overtaken message was last seen, during a flood
 
     def ended(self, overtaken, now):
         """True once per flood, ``quiet`` s after its last overtaken message."""
         if overtaken != self._count:
+            if self._last is None:
+                self._start = self._count
             self._count = overtaken
             self._last = now
             return False
         if self._last is not None and now - self._last >= self.quiet:
             self._last = None
-            return True
+            return overtaken - self._start >= self.least
         return False

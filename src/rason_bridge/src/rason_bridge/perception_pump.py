@@ -17,6 +17,10 @@ ROOM_WAIT = 1.0
 TAKE_WAIT = 0.2
 #: How often at most it logs what a flood made it skip (s, wall clock).
 SUMMARY_PERIOD = 10.0
+#: Messages overtaken that make a flood, whose end asks the JVM for a (concurrent) collection:
+#: on a busy machine a 50 Hz stream has a few overtaken now and then, and a collection for each
+#: cost more CPU than the stream itself.
+FLOOD_LEAST = 100
 
 
 class PerceptionPump(object):
@@ -38,7 +42,7 @@ class PerceptionPump(object):
         self._alive = alive
         self._clock = clock
         self._stop = threading.Event()
-        self._flood = FloodEnd()
+        self._flood = FloodEnd(least=FLOOD_LEAST)
         self._next_summary = clock() + SUMMARY_PERIOD
         self._watch = watch or SourceWatch((), 0.0)
 
