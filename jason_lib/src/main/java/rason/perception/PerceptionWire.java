@@ -22,10 +22,9 @@ import rason.core.InputLimits;
 public final class PerceptionWire {
 
     /**
-     * Bytes of UTF-8 that decode to at least one character each (a character takes 1 to 3 bytes,
-     * a surrogate pair 4 bytes for 2 characters, an invalid sequence up to 3 bytes for one
-     * U+FFFD): a literal of more bytes than this times the characters allowed is too long
-     * without decoding it.
+     * The most bytes of UTF-8 one character of a Java string comes from (1 to 3 for a character,
+     * 4 for a surrogate pair of 2, up to 3 for the U+FFFD of an invalid sequence): a literal of
+     * more bytes than this times the characters allowed is too long, without decoding it.
      */
     static final int MAX_BYTES_PER_CHARACTER = 4;
     /** Characters of a refused literal shown in its line. */
