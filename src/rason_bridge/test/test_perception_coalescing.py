@@ -218,3 +218,13 @@ def test_a_flood_ends_once_after_a_quiet_second():
     assert not end.ended(900, 110.0), 'once per flood'
     assert not end.ended(901, 111.0)
     assert end.ended(901, 112.5)
+
+
+def test_a_few_overtaken_messages_are_no_flood_when_a_flood_needs_more():
+    end = FloodEnd(quiet=1.0, least=100)
+    assert not end.ended(30, 10.0)
+    assert not end.ended(30, 11.5), 'a node behind for a moment: no flood ended'
+    assert not end.ended(31, 20.0)
+    assert not end.ended(130, 20.5)  # a hundred more without a quiet second between them
+    assert end.ended(130, 21.5)
+    assert not end.ended(130, 30.0)

@@ -47,7 +47,7 @@ class PerceptionCoalescer(object):
         self._lock = threading.Lock()
         self._cond = threading.Condition(self._lock)  # a message waits
         self._room = threading.Condition(self._lock)  # a source was taken
-        self._known_waiting = collections.OrderedDict()  # source -> (literals, stamp)
+        self._known_waiting = collections.OrderedDict()  # source -> (message, stamp)
         self._new_waiting = collections.OrderedDict()
         self._known = collections.OrderedDict()  # sources handed on, least recent first
         self._new_turn = False
@@ -66,10 +66,10 @@ class PerceptionCoalescer(object):
     def _count(self):
         return len(self._known_waiting) + len(self._new_waiting)
 
-    def put(self, source, literals, stamp, wait=0.0):
-        """One message (from a rospy thread): ADDED, REPLACED (a waiting one of its source
-        was overtaken) or DROPPED (its name is too long, or other sources filled the table
-        for ``wait`` s)."""
+    def put(self, source, message, stamp, wait=0.0):
+        """One message (from a rospy thread; the node's are serialized): ADDED, REPLACED (a
+        waiting one of its source was overtaken) or DROPPED (its name is too long, or other
+        sources filled the table for ``wait`` s)."""
         with self._lock:
             if len(source) > self._max_source_length:
                 self._too_long += 1
@@ -79,7 +79,7 @@ class PerceptionCoalescer(object):
                                     or self._count() < self._max_sources, wait)
             queue = self._queue_of(source)
             if queue is not None:
-                queue[source] = (literals, stamp)
+                queue[source] = (message, stamp)
                 self._replaced += 1
                 self._overtaken_ever += 1
                 _note(self._replaced_sources, source)
@@ -88,12 +88,12 @@ class PerceptionCoalescer(object):
                 self._dropped += 1
                 _note(self._dropped_sources, source)
                 return DROPPED
-            (self._known_waiting if source in self._known else self._new_waiting)[source] = (literals, stamp)
+            (self._known_waiting if source in self._known else self._new_waiting)[source] = (message, stamp)
             self._cond.notify()
             return ADDED
 
     def take(self, timeout=None):
-        """The next waiting source's newest message, ``(source, literals, stamp)``; None
+        """The next waiting source's newest message, ``(source, message, stamp)``; None
         after ``timeout`` s without any, or once closed."""
         with self._lock:
             if not self._count() and not self._closed:
@@ -102,13 +102,13 @@ class PerceptionCoalescer(object):
                 return None
             new = (self._new_turn or not self._known_waiting) and self._new_waiting
             self._new_turn = not new
-            source, (literals, stamp) = (self._new_waiting if new else self._known_waiting).popitem(last=False)
+            source, (message, stamp) = (self._new_waiting if new else self._known_waiting).popitem(last=False)
             self._known.pop(source, None)
             self._known[source] = True
             if len(self._known) > self._max_sources:
                 self._known.popitem(last=False)
             self._room.notify()
-            return source, literals, stamp
+            return source, message, stamp
 
     def close(self):
         """Wakes the worker; :meth:`take` returns None from now on."""
@@ -164,25 +164,32 @@ def _short(text, limit=60):
 
 
 class FloodEnd(object):
-    """Tells when a flood is over: messages were overtaken (the node fell behind), and then
-    none for ``quiet`` s. Fed the coalescer's :meth:`~PerceptionCoalescer.overtaken` count
-    and the time; no threads of its own.
+    """Tells when a flood is over: at least ``least`` messages were overtaken (the node fell
+    behind) with less than ``quiet`` s between one and the next, and then none for ``quiet``
+    s. Fed the coalescer's :meth:`~PerceptionCoalescer.overtaken` count and the time; no
+    threads of its own.
 
     :param quiet: seconds without an overtaken message that end a flood
+    :param least: overtaken messages that make a flood; fewer are a node that fell behind for
+        a moment (a busy machine), not one whose heap a flood grew
     """
 
-    def __init__(self, quiet=1.0):
+    def __init__(self, quiet=1.0, least=1):
         self.quiet = quiet
+        self.least = least
         self._count = 0
+        self._start = 0  # the count when the flood began
         self._last = None  # when an overtaken message was last seen, during a flood
 
     def ended(self, overtaken, now):
         """True once per flood, ``quiet`` s after its last overtaken message."""
         if overtaken != self._count:
+            if self._last is None:
+                self._start = self._count
             self._count = overtaken
             self._last = now
             return False
         if self._last is not None and now - self._last >= self.quiet:
             self._last = None
-            return True
+            return overtaken - self._start >= self.least
         return False

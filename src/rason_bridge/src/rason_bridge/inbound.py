@@ -7,9 +7,14 @@ import rospy
 from rason_msgs.msg import AgentMessage, Event, Perception, Presence, Pulse
 from rosgraph_msgs.msg import Clock
 
+from rason_bridge import java_config
 from rason_bridge.clock_watch import ClockWatch
 from rason_bridge.fleet_auth import to_int64
+from rason_bridge.perception_wire import SourceReader, max_message_bytes
 from rason_bridge.ros_links import publisher
+
+#: How often at most a dropped perception message is logged (s).
+DROPPED_PERIOD = 10
 
 
 class Inbound(object):
@@ -18,20 +23,25 @@ class Inbound(object):
     :param channel: its ``RosTopicChannel``, which takes the fleet's messages and presence
     :param perceptions: the :class:`rason_bridge.perception_pump.PerceptionPump`
     :param now_ns: ``now_ns()`` -> the ROS time in nanoseconds
+    :param settings: :data:`rason_bridge.params.Settings` (the input limits)
     """
 
-    def __init__(self, java_bridge, channel, mas_id, perceptions, now_ns):
+    def __init__(self, java_bridge, channel, mas_id, perceptions, now_ns, settings):
         self._bridge = java_bridge
         self._channel = channel
         self._mas_id = mas_id
         self._perceptions = perceptions
+        max_source_length = java_config.max_source_length()
+        self._sources = SourceReader(max_message_bytes(settings.max_literals, settings.max_literal_length,
+                                                       max_source_length), max_source_length, Perception._md5sum)
         self._now_ns = now_ns
         self.events = None  # the jason/event subscriber, once subscribed
         self._peer_heard = lambda node: None
 
     def subscribe(self):
         self.events = rospy.Subscriber('jason/event', Event, self._on_event, queue_size=None, tcp_nodelay=True)
-        rospy.Subscriber('jason/perception', Perception, self._on_perception, queue_size=100, tcp_nodelay=True)
+        # serialized: Java reads the literals (perceiveSerialized), no Python strings per message
+        rospy.Subscriber('jason/perception', rospy.AnyMsg, self._on_perception, queue_size=100, tcp_nodelay=True)
 
     def subscribe_fleet(self, settings, peer_heard):
         """The fleet over ROS topics (not with ``fleet_channel: mqtt``, whose channel is Java's);
@@ -72,7 +82,12 @@ class Inbound(object):
                 rospy.logwarn('%s', line)
 
     def _on_perception(self, msg):
-        self._perceptions.put(msg.source, msg.perception, self._now_ns())
+        source, why = self._sources.source(msg._buff, getattr(msg, '_connection_header', None))
+        if why is not None:
+            rospy.logwarn_throttle(DROPPED_PERIOD, 'dropped a message on jason/perception from %s: %s',
+                                   publisher(msg) or 'an unknown node', why)
+            return
+        self._perceptions.put(source, msg._buff, self._now_ns())
 
     def _on_event(self, msg):
         # parsed and checked in Java; the publisher is the decomposer to watch after action_started

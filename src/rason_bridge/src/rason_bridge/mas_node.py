@@ -87,9 +87,9 @@ class RasonMasNode(object):
         self._outbound = OutboundPump(self._bridge.outbox().take, lambda item: items.dispatch(item, self), rospy.logerr)
         self._perceptions = PerceptionPump(
             PerceptionCoalescer(s.max_sources, java_config.max_source_length()),
-            self._bridge.perception().perceive, self._bridge.releaseMemory, rospy.logwarn, rospy.logerr,
+            self._bridge.perception().perceiveSerialized, self._bridge.releaseMemory, rospy.logwarn, rospy.logerr,
             alive=self._running, watch=SourceWatch(s.expected_sources, s.expect_within))
-        self._inbound = Inbound(self._bridge, self._channel, self.mas_id, self._perceptions, _ros_now_ns)
+        self._inbound = Inbound(self._bridge, self._channel, self.mas_id, self._perceptions, _ros_now_ns, s)
         self._mind = None
         if s.mind_period > 0:
             publisher = rospy.Publisher('jason/mind', MindState, queue_size=2, latch=True)

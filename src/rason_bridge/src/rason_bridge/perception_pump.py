@@ -17,12 +17,16 @@ ROOM_WAIT = 1.0
 TAKE_WAIT = 0.2
 #: How often at most it logs what a flood made it skip (s, wall clock).
 SUMMARY_PERIOD = 10.0
+#: Messages overtaken that make a flood, whose end asks the JVM for a (concurrent) collection:
+#: on a busy machine a 50 Hz stream has a few overtaken now and then, and a collection for each
+#: cost more CPU than the stream itself.
+FLOOD_LEAST = 100
 
 
 class PerceptionPump(object):
     """
     :param coalescer: a :class:`rason_bridge.coalesce.PerceptionCoalescer`
-    :param perceive: ``perceive(source, literals, stamp_ns)`` hands one message to the agents
+    :param perceive: ``perceive(source, message, stamp_ns)`` hands one message (as :meth:`put` got it) to the agents
     :param release_memory: ``release_memory()`` once a flood has ended
     :param warn: ``warn(format, *args)``; ``error`` likewise
     :param alive: ``alive()`` -> False once the process shuts down
@@ -38,14 +42,15 @@ class PerceptionPump(object):
         self._alive = alive
         self._clock = clock
         self._stop = threading.Event()
-        self._flood = FloodEnd()
+        self._flood = FloodEnd(least=FLOOD_LEAST)
         self._next_summary = clock() + SUMMARY_PERIOD
         self._watch = watch or SourceWatch((), 0.0)
 
-    def put(self, source, literals, stamp):
-        """Store one message (from a subscriber's thread)."""
+    def put(self, source, message, stamp):
+        """Store one message of source (from a subscriber's thread): the node's are serialized
+        rason_msgs/Perception messages, read in Java."""
         self._watch.heard(source)
-        self._coalescer.put(source, literals, stamp, wait=ROOM_WAIT)
+        self._coalescer.put(source, message, stamp, wait=ROOM_WAIT)
 
     def start(self):
         self._watch.start()
@@ -65,9 +70,9 @@ class PerceptionPump(object):
             self._release_memory()  # what the flood made the JVM grow goes back now
         item = self._coalescer.take(TAKE_WAIT)
         if item is not None:
-            source, literals, stamp = item
+            source, message, stamp = item
             try:
-                self._perceive(source, literals, stamp)
+                self._perceive(source, message, stamp)
             except Exception as e:  # a bug must not end the thread every perception goes through
                 self._error('could not hand the perception of %r to the agents: %s', source[:100], e)
         for line in self._watch.overdue():

@@ -22,6 +22,8 @@ public final class PerceptionPort {
 
     /** Kind of the rate-limited lines of dropped perceptions. */
     public static final String DROPPED_PERCEPTION = "dropped perception";
+    /** Kind of the rate-limited lines of perceptions read with U+FFFD for bytes that are not UTF-8. */
+    public static final String NOT_UTF8 = "perception not UTF-8";
 
     private final Map<String, AgentPerception> agents = new ConcurrentHashMap<>();
     private final PerceptionSources sources = new PerceptionSources();
@@ -97,22 +99,51 @@ public final class PerceptionPort {
     public int perceive(String source, String[] texts, long nowNanos) {
         String shownSource = InputLimits.abbreviate(source, 100);
         if (source.length() > InputLimits.MAX_SOURCE_LENGTH)
-            return dropped("dropped perception message from source '" + shownSource + "': source name longer than "
-                    + InputLimits.MAX_SOURCE_LENGTH + " characters");
+            return droppedMessage(shownSource, "source name longer than " + InputLimits.MAX_SOURCE_LENGTH + " characters");
         if (texts.length > limits.maxLiterals())
-            return dropped("dropped perception message from source '" + shownSource + "': " + texts.length
-                    + " literals, more than " + limits.maxLiterals() + " (the source's percepts are unchanged)");
+            return droppedMessage(shownSource, PerceptionWire.tooManyLiterals(texts.length, limits.maxLiterals()));
         List<Literal> literals = sources.parse(source, texts, nowNanos, limits,
-                (text, why) -> dropped("dropped perception '" + InputLimits.abbreviate(text, 200) + "' from source '"
-                        + shownSource + "': " + why));
+                (text, why) -> droppedLiteral(text, shownSource, why));
         if (literals == null)
-            return dropped("dropped perception message from source '" + shownSource + "': more than "
-                    + limits.maxSources() + " sources heard within ~perception_ttl and this one is new"
-                    + " (the others' percepts are unchanged)");
+            return droppedMessage(shownSource, "more than " + limits.maxSources()
+                    + " sources heard within ~perception_ttl and this one is new (the others' percepts are unchanged)");
         List<Literal> shared = List.copyOf(literals);
         for (AgentPerception a : agents.values())
             a.update(source, shared, nowNanos);
         return shared.size();
+    }
+
+    /**
+     * As {@link #perceive(String, String[], long)}, with the message as rospy received it (its
+     * serialization, read by {@link PerceptionWire}; source is the one it holds, read by the
+     * node to coalesce messages): one call and no Python strings per message. A message that
+     * cannot be read is dropped whole, with its reason.
+     *
+     * @return how many literals were accepted
+     */
+    public int perceiveSerialized(String source, byte[] message, long nowNanos) {
+        String shownSource = InputLimits.abbreviate(source, 100);
+        if (source.length() > InputLimits.MAX_SOURCE_LENGTH)
+            return droppedMessage(shownSource, "source name longer than " + InputLimits.MAX_SOURCE_LENGTH + " characters");
+        PerceptionWire.Literals read;
+        try {
+            read = PerceptionWire.literals(message, limits, (text, why) -> droppedLiteral(text, shownSource, why));
+        } catch (IllegalArgumentException e) {
+            return droppedMessage(shownSource, e.getMessage());
+        }
+        if (read.notUtf8() > 0)
+            limited.log(NOT_UTF8, Level.WARNING, "perception message from source '" + shownSource + "': "
+                    + read.notUtf8() + " literals not valid UTF-8, read with U+FFFD for the invalid bytes", wall.nanos());
+        return perceive(source, read.texts(), nowNanos);
+    }
+
+    private int droppedMessage(String shownSource, String why) {
+        return dropped("dropped perception message from source '" + shownSource + "': " + why);
+    }
+
+    private int droppedLiteral(String text, String shownSource, String why) {
+        return dropped("dropped perception '" + InputLimits.abbreviate(text, 200) + "' from source '" + shownSource
+                + "': " + why);
     }
 
     private int dropped(String line) {
