@@ -5,14 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.List;
-import java.util.logging.Handler;
-import java.util.logging.LogRecord;
-import java.util.logging.Logger;
 
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
@@ -29,49 +23,26 @@ class BoundedInputTest {
     private final Bridge bridge = new Bridge();
     @RegisterExtension
     final RunningAgents agents = new RunningAgents(bridge);
-    private final Logger logger = Logger.getLogger("rason.bridge");
-    private final List<String> lines = new ArrayList<>();
-    private final Handler handler = new Handler() {
-        @Override
-        public synchronized void publish(LogRecord r) {
-            lines.add(r.getMessage());
-        }
-
-        @Override
-        public void flush() {
-        }
-
-        @Override
-        public void close() {
-        }
-    };
-
-    @AfterEach
-    void removeLogHandler() throws Exception {
-        logger.removeHandler(handler);
-    }
-
-    private synchronized long linesContaining(String s) {
-        return lines.stream().filter(l -> l.contains(s)).count();
-    }
+    @RegisterExtension
+    final CapturedLog log = new CapturedLog("rason.bridge");
 
     @Test
     void hostilePerceptionsAreDroppedAndTheAgentGoesOn() throws Exception {
         RosAgArch arch = agents.start(dir, "bob", "+go <- +went.\n");
-        logger.addHandler(handler);
+        log.attach();
 
         String[] tooMany = new String[1001];
         Arrays.fill(tooMany, "x(1)");
         assertEquals(0, bridge.perception().perceive("flood", tooMany, 100 * RunningAgents.SECOND));
-        assertTrue(linesContaining("dropped perception message from source 'flood': 1001 literals, more than 1000") <= 1);
+        assertTrue(log.containing("dropped perception message from source 'flood': 1001 literals, more than 1000") <= 1);
 
         String deep = "f(".repeat(100_000) + "a" + ")".repeat(100_000);
         String[] bad = new String[50];
         Arrays.fill(bad, deep);
         assertEquals(0, bridge.perception().perceive("deep", bad, 100 * RunningAgents.SECOND));
-        assertTrue(linesContaining("from source 'deep'") <= RateLimitedLog.DEFAULT_LINES,
-                "at most a few lines per period: " + lines.size());
-        assertTrue(lines.stream().allMatch(l -> l.length() < 1000), "no line echoes a whole literal");
+        assertTrue(log.containing("from source 'deep'") <= RateLimitedLog.DEFAULT_LINES,
+                "at most a few lines per period: " + log.lines().size());
+        assertTrue(log.lines().stream().allMatch(l -> l.length() < 1000), "no line echoes a whole literal");
 
         String[] many = new String[1000];
         for (int i = 0; i < many.length; i++)
@@ -85,30 +56,30 @@ class BoundedInputTest {
     @Test
     void aPerceptionCannotSayWhoSaidIt() throws Exception {
         RosAgArch arch = agents.start(dir, "bob", "+go <- +went.\n");
-        logger.addHandler(handler);
+        log.attach();
         assertEquals(2, bridge.perception().perceive("synth", new String[] { "fake(1)[source(alice)]", "~fake(2)[source(self)]",
                 "real(1)[certainty(0.9)]", "go" }, 100 * RunningAgents.SECOND));
         RunningAgents.await("the agent reacts to go", () -> RunningAgents.believes(arch, "went"));
         assertTrue(RunningAgents.believes(arch, "real(1)[certainty(0.9),source(percept)]"));
         assertTrue(!RunningAgents.believes(arch, "fake(1)") && !RunningAgents.believes(arch, "~fake(2)"));
-        assertEquals(2, linesContaining("annotation source(...) is reserved: Jason sets source(percept)"));
-        assertEquals(1, linesContaining("dropped perception 'fake(1)[source(alice)]' from source 'synth'"));
+        assertEquals(2, log.containing("annotation source(...) is reserved: Jason sets source(percept)"));
+        assertEquals(1, log.containing("dropped perception 'fake(1)[source(alice)]' from source 'synth'"));
     }
 
     @Test
     void aFloodOfNewSourcesIsBoundedAndKnownSourcesGoOn() throws Exception {
         RosAgArch arch = agents.start(dir, "bob", "+go <- +went.\n");
-        logger.addHandler(handler);
+        log.attach();
         bridge.perception().setTtlNanos(2 * RunningAgents.SECOND);
         assertEquals(1, bridge.perception().perceive("known", new String[] { "early(1)" }, 100 * RunningAgents.SECOND));
         assertEquals(0, bridge.perception().perceive("s".repeat(InputLimits.MAX_SOURCE_LENGTH + 1), new String[] { "x(1)" },
                 100 * RunningAgents.SECOND));
-        assertTrue(linesContaining("source name longer than 256 characters") == 1, lines.toString());
+        assertTrue(log.containing("source name longer than 256 characters") == 1, log.lines().toString());
         int max = bridge.limits().maxSources();
         for (int i = 0; i < 3 * max; i++)
             bridge.perception().perceive("flood_" + i, new String[] { "s(" + i + ")" }, 100 * RunningAgents.SECOND);
         assertEquals(max, bridge.perception().sources());
-        assertTrue(linesContaining("more than " + max + " sources heard within ~perception_ttl and this one is new")
+        assertTrue(log.containing("more than " + max + " sources heard within ~perception_ttl and this one is new")
                 <= RateLimitedLog.DEFAULT_LINES);
         assertEquals(2, bridge.perception().perceive("known", new String[] { "early(1)", "go" }, 100 * RunningAgents.SECOND));
         RunningAgents.await("the agent reacts to go", () -> RunningAgents.believes(arch, "went"));
@@ -121,16 +92,16 @@ class BoundedInputTest {
     @Test
     void eventsWithBadIdsOrHugeNamesAreIgnoredWithAReason() throws Exception {
         agents.start(dir, "bob", "+go <- +went.\n");
-        logger.addHandler(handler);
+        log.attach();
         for (String id : new String[] { "2147483648", "-1", "0", "abc", "1e3", "9".repeat(100_000) }) {
             assertTrue(!bridge.actions().event("bob", "action_feedback", new String[] { "OK", id }));
             assertTrue(!bridge.actions().event("bob", "action_started", new String[] { id }, "/decomposer"));
         }
-        assertTrue(linesContaining("action id 2147483648 outside 1..2147483647") == 2, lines.toString());
-        assertTrue(linesContaining("non-integer action id '1e3'") == 2, lines.toString());
+        assertTrue(log.containing("action id 2147483648 outside 1..2147483647") == 2, log.lines().toString());
+        assertTrue(log.containing("non-integer action id '1e3'") == 2, log.lines().toString());
         String huge = "n".repeat(1 << 20);
         for (int i = 0; i < 20; i++)
             assertTrue(!bridge.actions().event(huge + i, "action_feedback", new String[] { "OK", "1" }));
-        assertTrue(lines.stream().allMatch(l -> l.length() < 1000), "no line echoes a whole name or id");
+        assertTrue(log.lines().stream().allMatch(l -> l.length() < 1000), "no line echoes a whole name or id");
     }
 }

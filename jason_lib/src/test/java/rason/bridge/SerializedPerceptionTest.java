@@ -9,14 +9,8 @@ import static rason.perception.SerializedPerceptions.uint32;
 import java.io.ByteArrayOutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.List;
-import java.util.logging.Handler;
-import java.util.logging.LogRecord;
-import java.util.logging.Logger;
 
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
@@ -35,31 +29,8 @@ class SerializedPerceptionTest {
     private final Bridge bridge = new Bridge();
     @RegisterExtension
     final RunningAgents agents = new RunningAgents(bridge);
-    private final Logger logger = Logger.getLogger("rason.bridge");
-    private final List<String> lines = new ArrayList<>();
-    private final Handler handler = new Handler() {
-        @Override
-        public synchronized void publish(LogRecord r) {
-            lines.add(r.getMessage());
-        }
-
-        @Override
-        public void flush() {
-        }
-
-        @Override
-        public void close() {
-        }
-    };
-
-    @AfterEach
-    void removeLogHandler() {
-        logger.removeHandler(handler);
-    }
-
-    private synchronized long linesContaining(String s) {
-        return lines.stream().filter(l -> l.contains(s)).count();
-    }
+    @RegisterExtension
+    final CapturedLog log = new CapturedLog("rason.bridge");
 
     private int perceive(String source, byte[] message) {
         return bridge.perception().perceiveSerialized(source, message, NOW);
@@ -83,26 +54,26 @@ class SerializedPerceptionTest {
     void hostileMessagesAreDroppedWithAReasonAndTheAgentGoesOn() throws Exception {
         RosAgArch arch = agents.start(dir, "bob", "+go <- +went.\n");
         assertEquals(1, perceive("cam", serialized("cam", "keep(1)")));
-        logger.addHandler(handler);
+        log.attach();
 
         byte[] valid = serialized("cam", "keep(2)", "other(1)");
         assertEquals(0, perceive("cam", Arrays.copyOf(valid, valid.length - 2)));
-        assertEquals(1, linesContaining("dropped perception message from source 'cam': not a rason_msgs/Perception: "
-                + "the length of literal 2 (8 bytes) goes past the end"), lines.toString());
+        assertEquals(1, log.containing("dropped perception message from source 'cam': not a rason_msgs/Perception: "
+                + "the length of literal 2 (8 bytes) goes past the end"), log.lines().toString());
 
         ByteArrayOutputStream huge = new ByteArrayOutputStream();
         string(huge, "cam".getBytes(StandardCharsets.UTF_8));
         uint32(huge, 0xffff_ffffL);
         assertEquals(0, perceive("cam", huge.toByteArray()));
-        assertEquals(1, linesContaining("dropped perception message from source 'cam': 4294967295 literals, more than 1000"));
+        assertEquals(1, log.containing("dropped perception message from source 'cam': 4294967295 literals, more than 1000"));
 
         String deep = "f(".repeat(100_000) + "a" + ")".repeat(100_000);
         String[] bad = new String[50];
         Arrays.fill(bad, deep);
         assertEquals(0, perceive("deep", serialized("deep", bad)));
-        assertTrue(linesContaining("from source 'deep'") <= RateLimitedLog.DEFAULT_LINES,
-                "at most a few lines per period: " + lines.size());
-        assertTrue(lines.stream().allMatch(l -> l.length() < 1000), "no line echoes a whole literal");
+        assertTrue(log.containing("from source 'deep'") <= RateLimitedLog.DEFAULT_LINES,
+                "at most a few lines per period: " + log.lines().size());
+        assertTrue(log.lines().stream().allMatch(l -> l.length() < 1000), "no line echoes a whole literal");
         assertTrue(RunningAgents.believes(arch, "keep(1)"), "a dropped message leaves its source's percepts as they were");
 
         assertEquals(1, perceive("s", serialized("s", "go")));
@@ -112,7 +83,7 @@ class SerializedPerceptionTest {
     @Test
     void literalsThatAreNotUtf8AreReadWithReplacementCharactersAndSaidSo() throws Exception {
         RosAgArch arch = agents.start(dir, "bob", "+go <- +went.\n");
-        logger.addHandler(handler);
+        log.attach();
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         string(out, "cam".getBytes(StandardCharsets.UTF_8));
         uint32(out, 2);
@@ -121,15 +92,15 @@ class SerializedPerceptionTest {
         assertEquals(2, perceive("cam", out.toByteArray()));
         RunningAgents.await("the agent reacts to go", () -> RunningAgents.believes(arch, "went"));
         assertTrue(RunningAgents.believes(arch, "n(\"caf\uFFFD\")"));
-        assertEquals(1, linesContaining("perception message from source 'cam': 1 literals not valid UTF-8"), lines.toString());
+        assertEquals(1, log.containing("perception message from source 'cam': 1 literals not valid UTF-8"), log.lines().toString());
     }
 
     @Test
     void aSourceNameTooLongIsRefusedAsOnTheStringPath() {
         String source = "s".repeat(rason.core.InputLimits.MAX_SOURCE_LENGTH + 1);
-        logger.addHandler(handler);
+        log.attach();
         assertEquals(0, perceive(source, serialized(source, "x(1)")));
-        assertEquals(1, linesContaining("source name longer than 256 characters"));
+        assertEquals(1, log.containing("source name longer than 256 characters"));
         assertEquals(0, bridge.perception().sources());
     }
 }
