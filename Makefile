@@ -77,18 +77,10 @@ $(FLEET_KEY):
 # The robots-on-hosts tests (network namespaces; root) mostly wait on shaped links and
 # timeouts, so make test runs them beside everything else, with a log of their own, and
 # waits for them at the end.
-HOSTS_TESTS = src/rason/test/test_hosts_*.py
-
 test: setup
-	@mkdir -p build; rm -f build/pytest_hosts.rc; \
-	  ( $(ROSENV) $(PY) -m pytest -q $(HOSTS_TESTS) > build/pytest_hosts.log 2>&1; echo $$? > build/pytest_hosts.rc ) & \
-	  $(MAKE) --no-print-directory docs javatest && \
-	  { $(ROSENV) $(PY) -m pytest -q src --ignore-glob='$(HOSTS_TESTS)'; } && \
-	  $(MAKE) --no-print-directory rostest; status=$$?; wait; \
-	  hosts=$$(cat build/pytest_hosts.rc); \
-	  if [ "$$hosts" != 0 ]; then tail -80 build/pytest_hosts.log; fi; \
-	  echo "pytest (robots on hosts, log build/pytest_hosts.log): $$(tail -1 build/pytest_hosts.log)"; \
-	  [ $$status = 0 ] && [ "$$hosts" = 0 ]
+	@$(MAKE) --no-print-directory docs && rm -rf build/test_results && \
+	  { $(ROSENV) $(PY) -m rason_tools.lanes; status=$$?; \
+	    $(ROSENV) $(PY) src/rason/test/summarize_results.py build/test_results && [ $$status = 0 ]; }
 
 # The site under build/site, offline (no CDN, no web fonts); --strict fails on a missing page
 # or include, check_site_links on a missing anchor.
@@ -106,10 +98,9 @@ unit:
 	$(ROSENV) $(PY) -m pytest -q src
 
 rostest:
-	@rm -rf build/test_results
-	@$(ROSENV) catkin_make run_tests -DPYTHON_EXECUTABLE=$(PY) > build/run_tests.log 2>&1; \
-	  grep -E "^\[ROSTEST\]|^\[Testcase|^ *(SUMMARY|\* RESULT)|FAILURE|ERROR:" build/run_tests.log | grep -v "^$$" | head -200; \
-	$(ROSENV) $(PY) src/rason/test/summarize_results.py build/test_results
+	@rm -rf build/test_results; \
+	  $(ROSENV) $(PY) -m rason_tools.lanes --only gtest,rostest; status=$$?; \
+	  $(ROSENV) $(PY) src/rason/test/summarize_results.py build/test_results && [ $$status = 0 ]
 
 demo: setup
 	$(ROSENV) rosrun rason run_launch rason faulty_helper.launch fault:=both_actuators
@@ -122,7 +113,7 @@ demo-hosts: setup
 # The case study at real-time factor 1 and 0 (two campaign runs, about 40 s): same diagnosis,
 # steps within 10 %. Part of make test too; this runs it alone.
 rate-check: setup
-	$(ROSENV) rostest rason rate_independence.test
+	$(ROSENV) rostest rason rate_independence.test compare_steps:=true
 
 # BENCH_ARGS: e.g. "--quick --seconds 1" for a smoke run (see src/rason_bench).
 BENCH_ARGS ?=

@@ -41,6 +41,17 @@ class Frames(object):
             self.perceptions.append(list(msg.perception))
             self.cond.notify_all()
 
+    def await_a_robot(self, timeout):
+        """Waits for the first frame that names a robot: until vision_synth has the camera's
+        intrinsics (camera_info) its frames are unusable and name nobody, by design."""
+        with self.cond:
+            deadline = time.monotonic() + timeout
+            while not any(self.sightings):
+                left = deadline - time.monotonic()
+                if left <= 0:
+                    raise AssertionError('no frame named a robot in %.0f s (%d frames)' % (timeout, len(self.sightings)))
+                self.cond.wait(left)
+
     def next_frames(self, count, timeout):
         """The next count robots_seen frames (dicts name -> RobotSighting)."""
         with self.cond:
@@ -79,6 +90,7 @@ class TestSimFleetVision(unittest.TestCase):
 
     def test_each_robot_in_view_is_named_from_the_front_and_from_behind(self):
         poses = {r: robot.pose(timeout=30.0) for r, robot in self.robots.items()}
+        self.frames.await_a_robot(60.0)
         self.check_frames(poses)
         with self.frames.cond:
             literals = self.frames.perceptions[-1]
