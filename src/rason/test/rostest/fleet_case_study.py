@@ -1,0 +1,135 @@
+#!/usr/bin/python3
+"""The case study as one fleet program on simulated robots (issue 34): fleet_case_study.launch,
+every robot running agents/fleet/fleet_robot.mas2j. The test reads the agents' messages on
+/rason/messages (the contract net's calls, bids and awards) and the diagnoses on /diagnostics.
+
+Private parameters:
+  ~diagnoses        "agent:component ..." : each faulty robot's agent and the component its
+                    diagnosis must name
+  ~kill_helper_of   an agent of diagnoses: once the robot it awarded has found it, that
+                    robot's rason_mas is killed (SIGKILL); the caller must award another
+                    bidder within ~next_award_within seconds and still be diagnosed right
+  ~next_award_within  seconds, default 5
+  ~timeout          seconds (wall) for the whole scenario
+"""
+import os
+import signal
+import threading
+import time
+import unittest
+from xmlrpc.client import ServerProxy
+
+import rosgraph
+import rospy
+import rostest
+from diagnosis_reporter.report import STATUS_NAME
+from diagnostic_msgs.msg import DiagnosticArray
+from rason_msgs.msg import AgentMessage
+
+
+class FleetRun(object):
+    """The agent messages (with the wall time each was heard) and the first diagnosis of each agent."""
+
+    def __init__(self):
+        self._lock = threading.Lock()
+        self._messages = []
+        self._diagnoses = {}
+        rospy.Subscriber('/rason/messages', AgentMessage, self._on_message, queue_size=1000)
+        rospy.Subscriber('/diagnostics', DiagnosticArray, self._on_diagnostics, queue_size=100)
+
+    def _on_message(self, msg):
+        with self._lock:
+            self._messages.append((time.monotonic(), msg.sender, msg.receiver, msg.content))
+
+    def _on_diagnostics(self, msg):
+        with self._lock:
+            for status in msg.status:
+                if status.name == STATUS_NAME:
+                    values = dict((kv.key, kv.value) for kv in status.values)
+                    self._diagnoses.setdefault(values.get('agent'), values)
+
+    def messages(self):
+        with self._lock:
+            return list(self._messages)
+
+    def diagnosis(self, agent):
+        with self._lock:
+            return self._diagnoses.get(agent)
+
+    def awards(self, caller):
+        """(heard at, robot) of each award the caller sent, in order."""
+        return [(t, r) for t, s, r, c in self.messages() if s == caller and c.startswith('award(')]
+
+    def helpers(self, caller):
+        """The robots that accepted the caller's award, in order."""
+        awarded = {r for _, r in self.awards(caller)}
+        return [s for _, s, r, c in self.messages() if r == caller and c.startswith('accepted(') and s in awarded]
+
+    def said(self, sender, receiver, prefix):
+        return [t for t, s, r, c in self.messages() if s == sender and r == receiver and c.startswith(prefix)]
+
+
+def await_condition(what, seconds, condition, messages):
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        if condition():
+            return
+        time.sleep(0.1)
+    raise AssertionError('%s: not within %.0f s; messages: %s' % (what, seconds, messages()[-60:]))
+
+
+def kill_agents_of(robot_agent):
+    """SIGKILL the rason_mas of the robot whose agent is robot_agent (r2_robot: /r2/rason_mas)."""
+    node = '/%s/rason_mas' % robot_agent.split('_')[0]
+    uri = rosgraph.Master('/test_fleet_case_study').lookupNode(node)
+    _, _, pid = ServerProxy(uri).getPid('/test_fleet_case_study')
+    os.kill(pid, signal.SIGKILL)
+    return node
+
+
+class TestFleetCaseStudy(unittest.TestCase):
+
+    def test_fleet(self):
+        expected = dict(pair.split(':') for pair in rospy.get_param('~diagnoses').split())
+        victim_caller = rospy.get_param('~kill_helper_of', '')
+        within = float(rospy.get_param('~next_award_within', 5.0))
+        timeout = float(rospy.get_param('~timeout', 240.0))
+        run = FleetRun()
+        deadline = time.monotonic() + timeout
+
+        killed_helper = None
+        if victim_caller:
+            await_condition('%s to be found by the robot it awarded' % victim_caller, timeout,
+                            lambda: any(run.said(h, victim_caller, 'found(') for h in run.helpers(victim_caller)),
+                            run.messages)
+            killed_helper = helper = run.helpers(victim_caller)[-1]
+            killed_node = kill_agents_of(helper)
+            killed = time.monotonic()
+            rospy.loginfo('killed %s (%s), which watched %s', killed_node, helper, victim_caller)
+            await_condition('%s to award another robot after %s died' % (victim_caller, helper), within + 5.0,
+                            lambda: any(t > killed and r != helper for t, r in run.awards(victim_caller)),
+                            run.messages)
+            next_award = min(t for t, r in run.awards(victim_caller) if t > killed and r != helper)
+            self.assertLessEqual(next_award - killed, within,
+                                 'the next award came %.1f s after %s was killed' % (next_award - killed, helper))
+
+        for agent in expected:
+            await_condition('the diagnosis of %s' % agent, max(1.0, deadline - time.monotonic()),
+                            lambda: run.diagnosis(agent) is not None, run.messages)
+        for agent, component in expected.items():
+            self.assertEqual(run.diagnosis(agent).get('component'), component,
+                             '%s: %s; messages: %s' % (agent, run.diagnosis(agent), run.messages()[-60:]))
+            self.assertTrue(run.helpers(agent), '%s was never watched; messages: %s' % (agent, run.messages()[-60:]))
+        last_helpers = {agent: run.helpers(agent)[-1] for agent in expected}
+        self.assertEqual(len(set(last_helpers.values())), len(last_helpers),
+                         'each caller had a helper of its own: %s' % last_helpers)
+        for agent, helper in last_helpers.items():
+            self.assertNotIn(helper, expected, '%s was watched by %s, a faulty robot' % (agent, helper))
+            self.assertTrue(run.said(helper, agent, 'found('), '%s never found %s' % (helper, agent))
+        if victim_caller:
+            self.assertNotEqual(last_helpers[victim_caller], killed_helper, 'a killed robot cannot have helped to the end')
+
+
+if __name__ == '__main__':
+    rospy.init_node('test_fleet_case_study')
+    rostest.rosrun('rason', 'fleet_case_study', TestFleetCaseStudy)
