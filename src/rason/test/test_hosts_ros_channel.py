@@ -151,6 +151,10 @@ def _problems(seen, keys, must_deliver):
     return problems
 
 
+def _timed_out(seen, key):
+    return seen.sends[key][0] == 'ask' and ('answer', 'timeout') in seen.outcomes.get(key, ())
+
+
 def _stats(seen, keys):
     received = sum(1 for k in keys if seen.got_count[k])
     failed = {}
@@ -174,8 +178,10 @@ def test_10_percent_loss_never_drops_presence_nor_a_message_silently(ros_run):
     # still unacknowledged on a connection stalled into the cut, which the repair resets after
     # the heal (docs/guides/fleet-channel.md, the ROS channel across hosts).
     problems = _problems(seen, sent, must_deliver=False)
+    # an ask whose answer timed out ended visibly too: its asker got timeout, as the
+    # semantics table says an ask may end (a connection stalled by the loss holds asks too)
     problems += ['%s -> %s #%d never received and never failed' % (k[0], PEER[k[0]], k[1]) for k in sorted(sent)
-                 if seen.got_count[k] == 0 and not seen.failures(k)]
+                 if seen.got_count[k] == 0 and not seen.failures(k) and not _timed_out(seen, k)]
     missing = [k for k in sent if seen.got_count[k] == 0 and 'receiver_not_found' not in seen.failures(k)]
     print('(loss) failed and never received (reset after the heal): %d' % len(missing))
     assert not problems, '\n'.join(problems[:40])

@@ -156,11 +156,11 @@ curvatureSeen(K)
     .length(Others, N);
     .wait(.count(answer(reach(Me, F, L), _), N), W, _);
     .findall(offer(Cost, A), propose(reach(Me, F, L), Cost)[source(A)], Offers);
-    !award(reach(Me, F, L), Offers).
+    !awardMission(reach(Me, F, L), Offers).
 +!delegateMission <- !missionOver(false, [], delegate, both_actuators).
 
-+!award(Task, []) <- .print("Nobody can take my mission over"); !missionOver(false, [], delegate, both_actuators).
-+!award(Task, Offers) : delegateTimeout(W)
++!awardMission(Task, []) <- .print("Nobody can take my mission over"); !missionOver(false, [], delegate, both_actuators).
++!awardMission(Task, Offers) : delegateTimeout(W)
 <- .min(Offers, offer(Cost, Winner));
     .print("Out of service: ", Winner, " takes my mission over (", Cost, " m to go)");
     .send(Winner, tell, acceptProposal(Task));

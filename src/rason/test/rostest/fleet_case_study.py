@@ -10,8 +10,15 @@ Private parameters:
                     robot's rason_mas is killed (SIGKILL); the caller must award another
                     bidder within ~next_award_within seconds and still be diagnosed right
   ~next_award_within  seconds, default 5
+  ~missions         "agent:recovery ...": agents whose missions must be completed after their
+                    diagnosis (fleet_case_study.launch recovery:=true) with that recovery,
+                    judged from the simulator's true poses: the goal 1 m ahead of the robot's
+                    start reached within ~tolerance, and the robot back within ~tolerance of
+                    its start
+  ~tolerance        metres (0.15)
   ~timeout          seconds (wall) for the whole scenario
 """
+import math
 import os
 import signal
 import threading
@@ -22,20 +29,64 @@ from xmlrpc.client import ServerProxy
 import rosgraph
 import rospy
 import rostest
-from diagnosis_reporter.report import STATUS_NAME
+from diagnosis_reporter.report import MISSION_STATUS_NAME, STATUS_NAME
 from diagnostic_msgs.msg import DiagnosticArray
+from geometry_msgs.msg import PoseStamped
 from rason_msgs.msg import AgentMessage
 
 
-class FleetRun(object):
-    """The agent messages (with the wall time each was heard) and the first diagnosis of each agent."""
+MISSION_LENGTH = 1.0     # metres ahead of each robot's start (the thesis's mission)
+
+
+def robot_of(agent):
+    """The robot (namespace) whose agent this is: r3_robot -> r3."""
+    return agent.split('_')[0]
+
+
+def planar(msg):
+    """(x, y, yaw) of a geometry_msgs/PoseStamped."""
+    p, q = msg.pose.position, msg.pose.orientation
+    return p.x, p.y, math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
+
+
+class TrueTrack(object):
+    """A robot's true poses: its start, the closest it came to the goal 1 m ahead of the
+    start, and where it was when its mission's outcome was heard."""
 
     def __init__(self):
+        self.start = self.latest = self.at_end = None
+        self.closest = math.inf
+
+    def goal(self):
+        x, y, yaw = self.start
+        return x + MISSION_LENGTH * math.cos(yaw), y + MISSION_LENGTH * math.sin(yaw)
+
+    def add(self, pose):
+        if self.start is None:
+            self.start = pose
+        self.latest = pose
+        gx, gy = self.goal()
+        self.closest = min(self.closest, math.hypot(pose[0] - gx, pose[1] - gy))
+
+
+class FleetRun(object):
+    """The agent messages (with the wall time each was heard), the first diagnosis and mission
+    outcome of each agent, and the true poses of the robots of ``tracked`` agents."""
+
+    def __init__(self, tracked=()):
         self._lock = threading.Lock()
         self._messages = []
         self._diagnoses = {}
+        self._missions = {}
+        self.tracks = {agent: TrueTrack() for agent in tracked}
+        for agent in tracked:
+            rospy.Subscriber('/%s/true_pose' % robot_of(agent), PoseStamped, self._on_pose, agent, queue_size=50)
         rospy.Subscriber('/rason/messages', AgentMessage, self._on_message, queue_size=1000)
         rospy.Subscriber('/diagnostics', DiagnosticArray, self._on_diagnostics, queue_size=100)
+
+    def _on_pose(self, msg, agent):
+        with self._lock:
+            self.tracks[agent].add(planar(msg))
 
     def _on_message(self, msg):
         with self._lock:
@@ -44,9 +95,14 @@ class FleetRun(object):
     def _on_diagnostics(self, msg):
         with self._lock:
             for status in msg.status:
+                values = dict((kv.key, kv.value) for kv in status.values)
                 if status.name == STATUS_NAME:
-                    values = dict((kv.key, kv.value) for kv in status.values)
                     self._diagnoses.setdefault(values.get('agent'), values)
+                elif status.name == MISSION_STATUS_NAME and values.get('agent') not in self._missions:
+                    self._missions[values.get('agent')] = values
+                    track = self.tracks.get(values.get('agent'))
+                    if track is not None:
+                        track.at_end = track.latest
 
     def messages(self):
         with self._lock:
@@ -55,6 +111,10 @@ class FleetRun(object):
     def diagnosis(self, agent):
         with self._lock:
             return self._diagnoses.get(agent)
+
+    def mission(self, agent):
+        with self._lock:
+            return self._missions.get(agent)
 
     def awards(self, caller):
         """(heard at, robot) of each award the caller sent, in order."""
@@ -94,7 +154,9 @@ class TestFleetCaseStudy(unittest.TestCase):
         victim_caller = rospy.get_param('~kill_helper_of', '')
         within = float(rospy.get_param('~next_award_within', 5.0))
         timeout = float(rospy.get_param('~timeout', 240.0))
-        run = FleetRun()
+        missions = dict(pair.split(':') for pair in rospy.get_param('~missions', '').split())
+        tolerance = float(rospy.get_param('~tolerance', 0.15))
+        run = FleetRun(tracked=missions)
         deadline = time.monotonic() + timeout
 
         killed_helper = None
@@ -128,6 +190,20 @@ class TestFleetCaseStudy(unittest.TestCase):
             self.assertTrue(run.said(helper, agent, 'found('), '%s never found %s' % (helper, agent))
         if victim_caller:
             self.assertNotEqual(last_helpers[victim_caller], killed_helper, 'a killed robot cannot have helped to the end')
+
+        for agent in missions:
+            await_condition('the mission outcome of %s' % agent, max(1.0, deadline - time.monotonic()),
+                            lambda: run.mission(agent) is not None, run.messages)
+        for agent, recovery in missions.items():
+            mission, track = run.mission(agent), run.tracks[agent]
+            context = '%s: mission %s; diagnosis %s' % (agent, mission, run.diagnosis(agent))
+            self.assertEqual(mission.get('recovery'), recovery, context)
+            self.assertEqual(mission.get('completed'), 'true', context)
+            self.assertLessEqual(track.closest, tolerance, '%s came no closer than %.3f m to its goal; %s'
+                                 % (agent, track.closest, context))
+            back = math.hypot(track.at_end[0] - track.start[0], track.at_end[1] - track.start[1])
+            self.assertLessEqual(back, tolerance, '%s ended %.3f m from its start; %s' % (agent, back, context))
+            rospy.loginfo('%s: goal within %.3f m, back %.3f m from its start (%s)', agent, track.closest, back, recovery)
 
 
 if __name__ == '__main__':
