@@ -1,7 +1,8 @@
 """``make test``'s suites in two lanes: this machine has two cores and a rostest, mostly a
-simulated world with its nodes and JVMs, keeps about one and a half of them busy, so one
-lane leaves half a core idle for 25 minutes. Each job is one command (the hosts pytest, the
-JUnit run, the pytest run, the simulator's gtests, one rostest); a free lane takes the next.
+simulated world with its nodes and JVMs, keeps 0.9 to 1.7 of them busy, so one lane at a
+time left a good part of the machine idle for 25 minutes. Each job is one command (the hosts
+pytest, the JUnit run, the pytest run, the simulator's gtests, one rostest); a free lane takes
+the next.
 
 A ``.test`` that says ``<!-- make test: alone -->`` (it measures pacing or holds robots to a
 CPU budget, so a neighbour would change what it measures) runs once every other job has ended
