@@ -76,10 +76,10 @@ def test_a_test_over_the_fleet_channel_runs_twice_named_as_catkin_names_it(tmp_p
 def test_the_suite_has_every_part_and_the_project_marks_its_pacing_tests_alone():
     jobs = lanes.suite_jobs(lanes.PARTS, '/results')
     names = [job.name for job in jobs]
-    assert names[:4] == ['hosts pytest', 'gtest', 'javatest', 'pytest']
+    assert names[:4] == ['hosts pytest', 'javatest', 'pytest', 'gtest']
     hosts = jobs[0].argv
     assert any(arg.endswith('test_hosts_netns.py') for arg in hosts)
-    assert '--ignore-glob=' + lanes.HOSTS_TESTS in jobs[3].argv
+    assert '--ignore-glob=' + lanes.HOSTS_TESTS in jobs[2].argv
     alone = {job.name for job in jobs if job.alone}
     assert {'case_study_budget', 'sim_pacing'} <= alone
     assert 'case_study_both_actuators' in names and 'multi_two_mqtt' in names
