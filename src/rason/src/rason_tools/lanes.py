@@ -57,8 +57,8 @@ def rostest_jobs(test_files, results_dir):
 
 
 def suite_jobs(parts, results_dir, make='make'):
-    """The jobs of the chosen parts, longest first: the hosts pytest (about 9 minutes) in one
-    lane while the other runs through the rest."""
+    """The jobs of the chosen parts, the longest first: the hosts pytest (about 9 minutes) holds
+    one lane while the other runs through the rest."""
     jobs = []
     if 'hosts' in parts:
         jobs.append(Job('hosts pytest', [PYTHON, '-m', 'pytest', '-q', '-p', 'no:cacheprovider']
