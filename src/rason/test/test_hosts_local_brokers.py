@@ -40,13 +40,15 @@ PEER = {'a1': 'b1', 'b1': 'a1', 'c1': 'd1', 'd1': 'c1'}
 ACROSS, INSIDE = ('a1', 'b1'), ('c1', 'd1')
 
 
-def _robot_broker(hosts, robot):
-    """The robot's own broker on its loopback, bridged to the fleet broker; returns once bridged."""
+def _robot_broker(hosts, robot, folder):
+    """The robot's own broker on its loopback, bridged to the fleet broker, its log kept in
+    folder; returns once bridged."""
     broker = hosts.run_python(robot, 'rason_hosts.broker', [
         '--config', os.path.join(CONFIG_DIR, 'robot_bridge.conf'), '--listen', '127.0.0.1',
         '--port', PORT, '--fleet', '%s:%d' % (hosts.address('broker'), PORT), '--robot', robot],
-        stderr=subprocess.STDOUT)
+        stderr=subprocess.STDOUT, text=False)
     read_line(broker, 15, ' running')
+    drain(broker, os.path.join(folder, '%s_broker.log' % robot))
     state = hosts.run(robot, ['stdbuf', '-oL', 'mosquitto_sub', '-p', PORT, '-t',
                               'rason/bridge/%s/state' % robot, '-v'], stdout=subprocess.PIPE)
     read_line(state, 30, 'state 1')
@@ -62,7 +64,7 @@ def _play(hosts, log, marks, folder):
     drain(fleet, os.path.join(folder, 'fleet_broker.log'))
     envs = {}
     for robot in ('r1', 'r2'):
-        _robot_broker(hosts, robot)
+        _robot_broker(hosts, robot, folder)
         os.makedirs(os.path.join(folder, robot))
         envs[robot] = hosts.ros_env(dict(os.environ, ROS_LOG_DIR=os.path.join(folder, robot),
                                          PYTHONUNBUFFERED='1'))
