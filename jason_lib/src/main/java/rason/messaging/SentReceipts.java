@@ -88,12 +88,10 @@ public final class SentReceipts {
         return true;
     }
 
-    /** Whether a send waited longer than ttlNanos at nowNanos. */
+    /** Whether a send waited longer than ttlNanos at nowNanos: the oldest, as sends are kept in the order made. */
     public synchronized boolean due(long nowNanos, long ttlNanos) {
-        for (Send s : sends.values())
-            if (nowNanos - s.sentNanos > ttlNanos)
-                return true;
-        return false;
+        Iterator<Send> oldest = sends.values().iterator();
+        return oldest.hasNext() && nowNanos - oldest.next().sentNanos > ttlNanos;
     }
 
     /** Whether {@link #settle} has something to end. */
@@ -106,10 +104,12 @@ public final class SentReceipts {
     }
 
     /**
-     * On the agent's thread: the sends that end now, in the order they were made.
+     * On the agent's thread: the sends that end now, in the order they were made. A send whose
+     * intention was dropped meanwhile ends silently, when its receipts come or its TTL passes:
+     * asking Jason about every send still waiting would cost each settle as much as there are
+     * sends in flight.
      *
      * @param waiting whether Jason still has the intention of a message id suspended
-     *            (one dropped meanwhile is forgotten)
      * @param stopping non-null when the node stops: every waiting send fails with it
      */
     public synchronized List<Outcome> settle(Predicate<String> waiting, long nowNanos, long ttlNanos, String stopping) {
@@ -122,10 +122,10 @@ public final class SentReceipts {
             String id = e.getKey();
             Send s = e.getValue();
             Outcome o = outcome(id, s, gone, nowNanos, ttlNanos, stopping);
-            if (o == null && waiting.test(id))
+            if (o == null)
                 continue;
             it.remove();
-            if (o != null && waiting.test(id))
+            if (waiting.test(id))
                 out.add(o);
         }
         return out;

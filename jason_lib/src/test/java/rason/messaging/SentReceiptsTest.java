@@ -94,7 +94,21 @@ class SentReceiptsTest {
         assertTrue(receipts.isEmpty());
         receipts.expect("mid2", "bob", "/r2/rason_mas", SECOND);
         assertTrue(receipts.settle(id -> false, 2 * SECOND, TTL, null).isEmpty());
-        assertTrue(receipts.isEmpty(), "one that still waited for nothing is forgotten too");
+        assertFalse(receipts.isEmpty(), "kept until its receipt comes or its TTL passes");
+        assertTrue(receipts.settle(id -> false, SECOND + TTL + 1, TTL, null).isEmpty(), "its TTL ends it silently");
+        assertTrue(receipts.isEmpty());
+    }
+
+    @Test
+    void theOldestSendDecidesWhetherOneIsDue() {
+        receipts.expect("mid1", "bob", "/r2/rason_mas", SECOND);
+        receipts.expect("mid2", "bob", "/r2/rason_mas", 2 * SECOND);
+        assertFalse(receipts.due(SECOND + TTL, TTL));
+        assertTrue(receipts.due(SECOND + TTL + 1, TTL));
+        receipts.arrived("mid1", "bob", "/r2/rason_mas", false);
+        assertEquals(1, settle(SECOND + TTL + 1).size(), "mid1 delivered");
+        assertFalse(receipts.due(SECOND + TTL + 1, TTL), "mid2 is not due yet");
+        assertTrue(receipts.due(2 * SECOND + TTL + 1, TTL));
     }
 
     @Test
