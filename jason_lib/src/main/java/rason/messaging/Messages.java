@@ -15,6 +15,7 @@ import jason.asSyntax.Structure;
 import jason.asSyntax.Term;
 
 import rason.core.InputLimits;
+import rason.core.JasonParser;
 
 /** Jason messages as they cross between processes: content as Jason text, parsed once on arrival. */
 public final class Messages {
@@ -123,7 +124,7 @@ public final class Messages {
             throw new IllegalArgumentException("content '" + shown + "' refused: " + tooBig);
         Term term;
         try {
-            term = ASSyntax.parseTerm(text.strip());
+            term = JasonParser.term(text.strip());
         } catch (Exception | Error e) { // ParseException, or TokenMgrError from the lexer
             String why = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
             int nl = why.indexOf('\n');

@@ -1,6 +1,5 @@
 package rason.perception;
 
-import java.io.StringReader;
 import java.util.ArrayDeque;
 import java.util.Deque;
 
@@ -10,11 +9,9 @@ import jason.asSyntax.Literal;
 import jason.asSyntax.NumberTerm;
 import jason.asSyntax.Structure;
 import jason.asSyntax.Term;
-import jason.asSyntax.parser.ParseException;
-import jason.asSyntax.parser.as2j;
-import jason.asSyntax.parser.as2jConstants;
 
 import rason.core.InputLimits;
+import rason.core.JasonParser;
 
 /** Parses the text of one perception into a Jason literal, refusing what cannot be a percept. */
 public final class Perceptions {
@@ -26,13 +23,6 @@ public final class Perceptions {
      * Jason's belief base (the bridge adds none), so the others are kept as data.
      */
     public static final String RESERVED_ANNOTATION = "source";
-
-    /**
-     * One Jason parser per thread, re-read for each text: a new one per literal (as
-     * {@code ASSyntax.parseLiteral} makes) cost more than the parsing itself (its buffers and
-     * an exception with its stack trace, made at every construction).
-     */
-    private static final ThreadLocal<as2j> PARSER = ThreadLocal.withInitial(() -> new as2j(new StringReader("")));
 
     private Perceptions() {
     }
@@ -57,7 +47,7 @@ public final class Perceptions {
             throw new IllegalArgumentException(tooBig);
         Literal literal;
         try {
-            literal = parseLiteral(text.strip());
+            literal = JasonParser.literal(text.strip());
         } catch (Exception | Error e) { // the parser throws ParseException, its lexer TokenMgrError
             throw new IllegalArgumentException("not a Jason literal: " + firstLine(e.getMessage()));
         }
@@ -76,16 +66,6 @@ public final class Perceptions {
         if (reserved(literal))
             throw new IllegalArgumentException("annotation " + RESERVED_ANNOTATION
                     + "(...) is reserved: Jason sets source(percept)");
-        return literal;
-    }
-
-    /** As {@code ASSyntax.parseLiteral}, with this thread's parser. */
-    private static Literal parseLiteral(String text) throws ParseException {
-        as2j parser = PARSER.get();
-        parser.ReInit(new StringReader(text));
-        Literal literal = parser.literal();
-        if (parser.getNextToken().kind != as2jConstants.EOF)
-            throw new ParseException("Expected <EOF> after " + literal + " for parameter '" + text + "'");
         return literal;
     }
 
