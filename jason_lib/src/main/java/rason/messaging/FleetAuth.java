@@ -58,7 +58,9 @@ public final class FleetAuth {
     /** Why a message or presence is dropped; the word names the kind of the rate-limited log line. */
     public enum Problem {
         UNAUTHENTICATED("unauthenticated"), UNKNOWN_KEY("unknown key"), BAD_MAC("bad mac"), STALE("stale"),
-        REPLAYED("replayed"), FORGED("forged");
+        REPLAYED("replayed"), FORGED("forged"),
+        /** Never seen, but after a later one of its sender: reordered, or held back and played late. */
+        OUT_OF_ORDER("out of order");
 
         public final String word;
 
@@ -107,7 +109,7 @@ public final class FleetAuth {
     private static final class Seen {
         long incarnation;
         long sequence;
-        long heardNanos;
+        long accepted, heardNanos; // accepted: bit i set if sequence - i was
     }
 
     private final LongSupplier wallClock;
@@ -304,8 +306,7 @@ public final class FleetAuth {
                         + "; it now runs " + last.incarnation + ")");
             else if (last != null && s.incarnation() == last.incarnation
                     && Long.compareUnsigned(s.sequence(), last.sequence) <= 0)
-                r = new Refusal(Problem.REPLAYED, "sequence " + Long.toUnsignedString(s.sequence())
-                        + " already seen (the last accepted is " + Long.toUnsignedString(last.sequence) + ")");
+                r = behind(last, s.sequence());
             if (r == null && more != null)
                 r = more.get();
             if (r != null)
@@ -315,11 +316,23 @@ public final class FleetAuth {
                 last = new Seen();
                 seen.put(key, last);
             }
+            long ahead = s.incarnation() == last.incarnation ? s.sequence() - last.sequence : Long.MAX_VALUE;
+            last.accepted = ahead >= Long.SIZE ? 1 : last.accepted << ahead | 1;
             last.incarnation = s.incarnation();
             last.sequence = s.sequence();
             last.heardNanos = nowNanos;
             return null;
         }
+    }
+
+    /** Why sequence, not above the last accepted, is refused: seen before, or (within 64) overtaken. */
+    private static Refusal behind(Seen last, long sequence) {
+        long back = last.sequence - sequence;
+        String n = "sequence " + Long.toUnsignedString(sequence), l = Long.toUnsignedString(last.sequence);
+        if (back < Long.SIZE && (last.accepted >>> back & 1) == 0)
+            return new Refusal(Problem.OUT_OF_ORDER, n + " came after " + l
+                    + " (reordered or held back on the way; dropped to keep the sender's order)");
+        return new Refusal(Problem.REPLAYED, n + " already seen (the last accepted is " + l + ")");
     }
 
     /** Number of senders whose replay state is kept (bounded by {@link #MAX_SENDERS}). */

@@ -220,7 +220,11 @@ class FleetAuthTest {
         WireMessage m1 = tell("hello(1)"), m2 = tell("hello(2)");
         Signed s1 = sender.sign(m1), s2 = sender.sign(m2);
         assertNull(receive(receiver, m2, s2));
-        assertEquals(Problem.REPLAYED, problem(receive(receiver, m1, s1)));
+        Refusal late = receive(receiver, m1, s1);
+        assertEquals(Problem.OUT_OF_ORDER, problem(late), "never seen: not called a replay");
+        assertEquals("out of order: sequence 1 came after 2 (reordered or held back on the way; dropped to keep the "
+                + "sender's order)", late.text());
+        assertEquals(Problem.REPLAYED, problem(receive(receiver, m2, s2)), "accepted before: a replay");
         WireMessage m3 = tell("hello(3)");
         assertNull(receive(receiver, m3, sender.sign(m3)), "gaps are fine: the receiver hears only what is for it");
     }
