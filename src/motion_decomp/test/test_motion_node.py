@@ -35,7 +35,11 @@ def ros(monkeypatch):
         def __init__(self, topic, data_class, callback, queue_size=None):
             self.callback = callback
             self.impl = type('Impl', (), {'connections': []})()
+            self.topic, self.unregistered = topic, False
             fakes.subscribers[topic] = self
+
+        def unregister(self):
+            self.unregistered = True
 
     class Timer(object):
         def __init__(self, period, callback):
@@ -254,6 +258,33 @@ def test_guided_poses_drive_after_pose_source_guided_while_fresh(ros):
     assert events == [('jason/event', 'a', Event.ACTION_FEEDBACK, [Event.OK, '1']),
                       ('jason/event', 'a', Event.ACTION_FEEDBACK, [Event.OK, '2'])]
     assert ('cmd_vel', 0.1, 0.0) in out(ros)            # the guided linear speed
+
+
+def test_pose_source_guided_with_a_topic_drives_on_that_topic_only_until_odom(ros):
+    node.MotionDecompNode({}, rate=20.0)
+    control = next(t for t in ros.timers if t.period == pytest.approx(0.05))
+    action = ros.subscribers['jason/action'].callback
+    own = ros.subscribers['guided_pose'].callback
+    ros.subscribers['odom'].callback(Odometry())
+    ros.now = 10.0
+    action(Action(agent='a', action_id=1, action='pose_source', parameters=['guided', '/r1/located/r4']))
+    control.callback(None)                               # the setting takes effect: subscribed
+    watcher = ros.subscribers['/r1/located/r4']
+    action(Action(agent='a', action_id=2, action='move', parameters=['1']))
+    own(guided_pose(0.0, 0.0, ros.now))                  # the node's own topic is not used now
+    ros.now += 0.05
+    control.callback(None)
+    assert out(ros)[-1] == ('cmd_vel', 0.0, 0.0)
+    watcher.callback(guided_pose(0.0, 0.0, ros.now))
+    ros.now += 0.05
+    control.callback(None)
+    assert out(ros)[-1] == ('cmd_vel', 0.1, 0.0)
+    action(Action(agent='a', action_id=3, action='pose_source', parameters=['odom']))
+    action(Action(agent='a', action_id=2, action=Action.CANCEL, parameters=[Event.DROPPED]))
+    for _ in range(3):
+        ros.now += 0.05
+        control.callback(None)
+    assert watcher.unregistered
 
 
 def test_a_stale_or_broken_guided_pose_is_no_pose_and_a_zero_stamp_counts_as_received(ros):

@@ -91,6 +91,8 @@ def ok(*ids):
     ('compensate', ['left', '20'], m.Compensation('left', 20.0)),
     ('pose_source', ['odom'], m.PoseSourceSetting('odom')),
     ('pose_source', ['guided'], m.PoseSourceSetting('guided')),
+    ('pose_source', ['guided', '/r1/located/r4'], m.PoseSourceSetting('guided', '/r1/located/r4')),
+    ('pose_source', ['guided', 'located/faulty'], m.PoseSourceSetting('guided', 'located/faulty')),
 ])
 def test_the_new_actions_parse(action, params, parsed):
     assert m.parse_motion(action, params) == parsed
@@ -106,6 +108,10 @@ def test_the_new_actions_parse(action, params, parsed):
     ('compensate', ['2', 'left']),
     ('pose_source', ['gps']), ('pose_source', ['']), ('pose_source', ['odom', 'guided']),
     ('pose_source', []), ('pose_source', ['"guided"']),
+    ('pose_source', ['odom', '/r1/located/r4']), ('pose_source', ['guided', '']),
+    ('pose_source', ['guided', '~located']), ('pose_source', ['guided', '/r1//r4']),
+    ('pose_source', ['guided', '/r1/located/']), ('pose_source', ['guided', '/r1/located r4']),
+    ('pose_source', ['guided', '/r1', 'x']),
 ])
 def test_bad_parameters_of_the_new_actions_fail_at_once(action, params):
     with pytest.raises(m.BadParameters):

@@ -14,9 +14,11 @@ motion has ended and how:
     curvature ``Gain`` (rad/m; ``left`` counter-clockwise, ``right`` clockwise, ``none``
     normal driving) in planned arcs (:mod:`motion_decomp.arc`); a ``move(D)`` is then a
     goto to the point D m ahead of where it starts, without the ``bad_move`` check;
-``pose_source(Name)``
+``pose_source(Name)``, ``pose_source(guided, Topic)``
     a setting: later motions use the odometry (``odom``) or a fresh guided pose
-    (``guided``, :mod:`motion_decomp.pose_source`) and, while guided, the guided speeds.
+    (``guided``, :mod:`motion_decomp.pose_source`) and, while guided, the guided speeds;
+    ``Topic`` names where the guided poses come from (a robot of a fleet guided by whichever
+    robot watches it), instead of the node's ``guided_pose``.
 
 All of them wait in one FIFO (:class:`MotionScheduler`): a setting takes effect, and answers
 OK, when its turn comes, so the motions queued before it run with the old setting.
@@ -137,10 +139,14 @@ class Compensation(namedtuple('Compensation', 'side gain')):
         return SIDES[self.side] * self.gain
 
 
-class PoseSourceSetting(namedtuple('PoseSourceSetting', 'name')):
-    """``pose_source(Name)``: ``name`` one of :data:`POSE_SOURCES`."""
+class PoseSourceSetting(namedtuple('PoseSourceSetting', 'name topic')):
+    """``pose_source(Name)``: ``name`` one of :data:`POSE_SOURCES`; ``topic`` the guided
+    poses' topic of ``pose_source(guided, Topic)``, ``None`` for the node's own."""
     __slots__ = ()
     kind = POSE_SOURCE
+
+    def __new__(cls, name, topic=None):
+        return super(PoseSourceSetting, cls).__new__(cls, name, topic)
 
 
 #: Normal driving: what ``compensate(none, 0)`` sets.
@@ -152,6 +158,8 @@ Feedback = namedtuple('Feedback', 'agent action_id result')
 # A plain decimal number, as Jason prints it ("1", "-0.3", "1.0E-4"); float()
 # alone would also take "nan", "inf", "1_0" and surrounding blanks.
 _NUMBER = re.compile(r'[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\Z')
+# A ROS topic name, global or relative (no ~: a private name would be the decomposer's own).
+_TOPIC = re.compile(r'/?[A-Za-z][A-Za-z0-9_]*(?:/[A-Za-z][A-Za-z0-9_]*)*\Z')
 
 
 class UnknownAction(ValueError):
@@ -195,6 +203,10 @@ def parse_motion(action, parameters):
         raise UnknownAction('%r is not a motion action (only %s)' % (action, ', '.join(MOTION_ACTIONS)))
     parameters = list(parameters)
     arity = 2 if action in (GOTO, COMPENSATE) else 1
+    if action == POSE_SOURCE and len(parameters) == 2 and parameters[0] == GUIDED:
+        if not isinstance(parameters[1], str) or not _TOPIC.match(parameters[1]):
+            raise BadParameters('pose_source(guided, %r): not a topic name' % (parameters[1],))
+        return PoseSourceSetting(GUIDED, parameters[1])
     if len(parameters) != arity:
         raise BadParameters('%s needs exactly %d parameter(s), got %d: %r'
                             % (action, arity, len(parameters), parameters))
@@ -425,6 +437,7 @@ class MotionScheduler(object):
         self.current = None     # (request, MotionMonitor or GotoMotion) or None
         self.compensation = NO_COMPENSATION
         self.pose_source = ODOM
+        self.guided_topic = None    # pose_source(guided, Topic)'s topic; None: the node's own
 
     @property
     def pending(self):
@@ -493,6 +506,7 @@ class MotionScheduler(object):
             self.compensation = setting
         else:
             self.pose_source = setting.name
+            self.guided_topic = setting.topic
 
     def motion_options(self):
         """The tuning of a motion starting now: :data:`DEFAULTS` keys, with the guided speeds

@@ -9,13 +9,17 @@ RIGHT/clockwise, i.e. negative ``angular.z``), :mod:`motion_decomp.goto`,
 Topics (relative names: run one node per robot, in the robot's namespace or with remapping):
 
 - subscribes ``jason/action`` (rason_msgs/Action): ``move(Metres)``, ``turn(Degrees)``,
-  ``goto(X, Y)``, ``compensate(Side, Gain)``, ``pose_source(Name)``; every other action is
+  ``goto(X, Y)``, ``compensate(Side, Gain)``, ``pose_source(Name)``,
+  ``pose_source(guided, Topic)``; every other action is
   left to other decomposers (logged at debug level only)
 - subscribes ``odom`` (nav_msgs/Odometry): the robot's pose; messages with NaN/inf are
   ignored with a throttled warning
 - subscribes ``guided_pose`` (geometry_msgs/PoseStamped): the robot's pose as someone else
   sees it, used after ``pose_source(guided)`` while at most ``~guided_max_age`` old (a zero
-  stamp counts as the time it arrived); NaN/inf means "no pose"
+  stamp counts as the time it arrived); NaN/inf means "no pose". After
+  ``pose_source(guided, Topic)`` the guided poses are read from ``Topic`` instead (subscribed
+  when the setting takes effect, until another ``pose_source``), e.g. ``/r1/located/r4``:
+  the robot of a fleet that watches this one
 - publishes ``cmd_vel`` (geometry_msgs/Twist) at ``~rate`` while a motion runs, and one
   zero Twist when it ends; nothing while idle
 - publishes ``odom_commanded`` (nav_msgs/Odometry, frame ``~odom_commanded_frame``, child
@@ -64,6 +68,9 @@ from motion_decomp import monitor
 from motion_decomp.commanded_odometry import CommandedOdometry
 from motion_decomp.geometry import is_finite_pose, yaw_from_quaternion
 from motion_decomp.pose_source import CommandedTrail, carried_forward, stamped_pose
+
+#: The guided poses' topic unless pose_source(guided, Topic) names another.
+GUIDED_POSE = 'guided_pose'
 
 #: Seconds between two odom_commanded messages while no motion runs.
 IDLE_ODOM_PERIOD = 1.0
@@ -177,6 +184,8 @@ class MotionDecompNode(object):
         self._scheduler = monitor.MotionScheduler(**options)
         self._pose = None
         self._guided = None     # the latest guided StampedPose, or None
+        self._guided_topic = GUIDED_POSE    # where the guided poses used now come from
+        self._named_guide = None            # the Subscriber of pose_source(guided, Topic)
         self._actions = {}      # (agent, action_id) -> the Decomposer's action, queued or running
         self._commanded = CommandedOdometry()
         # how the robot moved since a guided pose's stamp: a fresh one is carried forward by it
@@ -186,7 +195,7 @@ class MotionDecompNode(object):
         self._cmd_pub = rospy.Publisher('cmd_vel', Twist, queue_size=10)
         self._commanded_pub = rospy.Publisher('odom_commanded', Odometry, queue_size=10)
         rospy.Subscriber('odom', Odometry, self._on_odom, queue_size=10)
-        rospy.Subscriber('guided_pose', PoseStamped, self._on_guided_pose, queue_size=10)
+        rospy.Subscriber(GUIDED_POSE, PoseStamped, self._guided_pose_from(GUIDED_POSE), queue_size=10)
         # registered before the Decomposer's hook: the control loop stops before the
         # Decomposer stops (on_cancel) and answers every held motion with shutdown
         rospy.on_shutdown(self._on_shutdown)
@@ -201,13 +210,33 @@ class MotionDecompNode(object):
         with self._lock:
             self._pose = pose
 
-    def _on_guided_pose(self, msg):
+    def _guided_pose_from(self, topic):
+        return lambda msg: self._on_guided_pose(msg, topic)
+
+    def _on_guided_pose(self, msg, topic):
         pose = pose_from_pose(msg.pose)
         guided = None if pose is None else stamped_pose(pose, msg.header.stamp.to_sec(), rospy.get_time())
         if guided is None:
             rospy.logwarn_throttle(5.0, 'motion_decomp: a guided pose with NaN/inf: no guided pose')
         with self._lock:
-            self._guided = guided
+            if topic == self._guided_topic:     # not a pose from a topic no longer used
+                self._guided = guided
+
+    def _follow_guided_topic(self):
+        # the topic the guided poses come from, after a pose_source setting took effect
+        with self._lock:
+            topic = self._scheduler.guided_topic or GUIDED_POSE
+            if topic == self._guided_topic:
+                return
+            self._guided_topic, self._guided = topic, None
+            old, self._named_guide = self._named_guide, None
+        if old is not None:
+            old.unregister()
+        if topic != GUIDED_POSE:
+            subscriber = rospy.Subscriber(topic, PoseStamped, self._guided_pose_from(topic), queue_size=10)
+            with self._lock:
+                self._named_guide = subscriber
+        rospy.loginfo('motion_decomp: guided poses from %s', topic)
 
     def _send(self, command, now):
         # with the lock held: a twist on cmd_vel, and into the commanded odometry
@@ -258,6 +287,8 @@ class MotionDecompNode(object):
                 self._send(command, now)
             self._publish_commanded(now, running=command is not None)
             setting = self._setting_text() if feedback is not None and command is None else None
+        if setting is not None:
+            self._follow_guided_topic()
         if feedback is not None:
             rospy.loginfo('motion_decomp: %s: action %d ended: %s%s', feedback.agent,
                           feedback.action_id, feedback.result, setting or '')
@@ -278,8 +309,9 @@ class MotionDecompNode(object):
     def _setting_text(self):
         # with the lock held
         c = self._scheduler.compensation
-        return ' (now: compensate(%s, %g), pose_source(%s))' % (c.side, c.gain,
-                                                                  self._scheduler.pose_source)
+        topic = self._scheduler.guided_topic
+        return ' (now: compensate(%s, %g), pose_source(%s%s))' % (
+            c.side, c.gain, self._scheduler.pose_source, ', %s' % topic if topic else '')
 
     def _on_shutdown(self):
         self._timer.shutdown()

@@ -5,6 +5,10 @@
 //   Plan      the plans below: one recovery per diagnosis
 //   Execute   reconfiguration actions of the motion decomposer (compensate/2,
 //             pose_source/1) and the other robots (contract net, guide)
+// A program that finds its guide or delegate otherwise (agents/fleet/fleet_robot.asl: by
+// its own contract net) gives its own +!beGuided and +!delegateMission first, and reuses
+// !guidedBy, !awaitDelegate and the hooks !guidedPoseFrom, !guidanceFailed, !delegated and
+// !notDelegated.
 //   Knowledge beliefs: missionStart/1, missionCmdStart/1, seenMove/6, helpedBy/1 and the
 //             perceptions pos/3 (odometry), cmd_pos/3 (commanded odometry)
 // The mission is the thesis's: reach the point missionLength ahead of the start, then come
@@ -119,9 +123,19 @@ curvatureSeen(K)
 
 // The helper streams my pose as it sees it (its odometry frame); the start and the goal in
 // that frame come from where it sees me now and how far I commanded myself since the start.
-+!beGuided : helpedBy(H) & .my_name(Me) & guideWait(W)
++!beGuided : helpedBy(H)
 <- .send(H, achieve, guideMe);
-    .wait(seenAt(_, _, _)[source(H)], W, _);
+    !guidedBy(H).
++!beGuided <- !missionOver(false, [], guided, odometry).
+-!beGuided : helpedBy(H)
+<- -beingGuided;
+    !sendSafely(H, achieve, stopGuiding);
+    !missionOver(false, [], guided, odometry).
+
+// The mission driven on H's view of me, once H is guiding me (agents/fleet/fleet_robot.asl
+// calls it for the robot its contract net chose).
++!guidedBy(H) : .my_name(Me) & guideWait(W)
+<- .wait(seenAt(_, _, _)[source(H)], W, _);
     ?seenAt(X, Y, T)[source(H)];
     ?cmd_pos(CX, CY, CT);
     ?missionCmdStart(CS);
@@ -131,25 +145,31 @@ curvatureSeen(K)
     ?missionLength(L);
     ?compose(Start, pose(L, 0, 0), Goal);
     .print(H, " sees me at (", X, ", ", Y, "); I follow its view");
-    pose_source(guided);
+    !guidedPoseFrom(H);
     +beingGuided;
     !driveMission(Goal, Start);
     -beingGuided;
     pose_source(odom);
     .send(H, achieve, stopGuiding);
     !missionOver(true, [Me], guided, odometry).
-+!beGuided <- !missionOver(false, [], guided, odometry).
--!beGuided : helpedBy(H)
+-!guidedBy(H)
 <- -beingGuided;
     !sendSafely(H, achieve, stopGuiding);
-    !missionOver(false, [], guided, odometry).
+    !guidanceFailed(H).
+
+// My decomposer's guided pose: the helper's view of me, wired by the launch file.
++!guidedPoseFrom(H) <- pose_source(guided).
++!guidanceFailed(H) <- !missionOver(false, [], guided, odometry).
 
 /* Execute: delegate the mission with a contract net when I cannot move */
 
 // The task: reach the point Forward metres ahead of me and Left metres to my left.
+delegatedTask(reach(Me, F, L))
+    :- missionGoal(Goal) & pos(X, Y, T) & relative(pose(X, Y, T), Goal, pose(F, L, _)) & .my_name(Me).
+
 +!delegateMission
-: missionGoal(Goal) & pos(X, Y, T) & relative(pose(X, Y, T), Goal, pose(F, L, _))
-  & .my_name(Me) & .all_names(All) & .delete(Me, All, Others) & Others \== []
+: delegatedTask(reach(Me, F, L))
+  & .all_names(All) & .delete(Me, All, Others) & Others \== []
   & proposalWait(W)
 <- .print("I cannot move: calling for proposals to reach the point ", F, " m ahead of me and ", L, " m to my left");
     .send(Others, tell, cfp(reach(Me, F, L)));
@@ -160,17 +180,24 @@ curvatureSeen(K)
 +!delegateMission <- !missionOver(false, [], delegate, both_actuators).
 
 +!awardMission(Task, []) <- .print("Nobody can take my mission over"); !missionOver(false, [], delegate, both_actuators).
-+!awardMission(Task, Offers) : delegateTimeout(W)
++!awardMission(Task, Offers)
 <- .min(Offers, offer(Cost, Winner));
     .print("Out of service: ", Winner, " takes my mission over (", Cost, " m to go)");
     .send(Winner, tell, acceptProposal(Task));
     for (.member(offer(_, A), Offers) & A \== Winner) { .send(A, tell, rejectProposal(Task)) };
-    .wait(done(Task)[source(Winner)] | failure(Task)[source(Winner)], W, _);
+    !awaitDelegate(Task, Winner).
+
+// The robot that took my mission over reports back (agents/fleet/fleet_robot.asl waits so
+// for the robot its contract net chose).
++!awaitDelegate(Task, Winner) : delegateTimeout(W)
+<- .wait(done(Task)[source(Winner)] | failure(Task)[source(Winner)], W, _);
     if (done(Task)[source(Winner)]) {
-        !missionOver(true, [Winner], delegate, both_actuators);
+        !delegated(Task, Winner);
     } else {
-        !missionOver(false, [], delegate, both_actuators);
+        !notDelegated(Task, Winner);
     }.
++!delegated(Task, Winner) <- !missionOver(true, [Winner], delegate, both_actuators).
++!notDelegated(Task, Winner) <- !missionOver(false, [], delegate, both_actuators).
 
 /* The outcome */
 

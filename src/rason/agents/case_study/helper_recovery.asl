@@ -10,30 +10,46 @@ sightingSettle(1000).  // ms the guided robot is watched before its pose is sent
 detour(0.5, 0.75).     // m ahead of and beside a robot whose mission I take over: the
                        // waypoint that keeps me clear of it on the way to its goal
 
+// The name robot_guide knows robot R by (located/4, guide/2): its agent's name, unless the
+// including program names it otherwise (cameraName/2, agents/fleet/fleet_robot.asl).
+guideName(R, N) :- cameraName(R, N).
+guideName(R, R) :- not cameraName(R, _).
+locatedAs(R, X, Y, Yaw) :- guideName(R, N) & located(N, X, Y, Yaw).
+
+// The task reach(R, Forward, Left) from where I see R: R's pose (Seen) and the goal (Goal) in
+// my odometry frame, and how far I would drive to it (Cost, metres).
+reachGoal(R, F, L, pose(X, Y, T), Goal, Cost)
+    :- locatedAs(R, X, Y, T) & pos(HX, HY, HT)
+     & compose(pose(X, Y, T), pose(F, L, 0), Goal) & distance(pose(HX, HY, HT), Goal, Cost).
+
 // The side of a robot (1 left, -1 right) on which I am, from my lateral offset L.
 sideOf(L, 1) :- L >= 0.
 sideOf(L, -1) :- L < 0.
 
 /* Guiding: keep the robot centred in the camera; robot_guide streams its pose */
 
-+!guideMe[source(R)]
++!guideMe[source(R)] <- !startGuiding(R).
+
+// Also the fleet's guide (agents/fleet/fleet_robot.asl), once its contract net chose it.
++!startGuiding(R)
 <- +guiding(R);
     !!keepGuiding(R);
     !tellSighting(R).
 
 +!tellSighting(R) : sightingSettle(T)
-<- .wait(located(R, _, _, _), 5000, _);
+<- .wait(locatedAs(R, _, _, _), 5000, _);
     .wait(T);
-    ?located(R, X, Y, Yaw);
+    ?locatedAs(R, X, Y, Yaw);
     .print("Guiding ", R, ", seen at (", X, ", ", Y, ")");
     .send(R, tell, seenAt(X, Y, Yaw)).
 -!tellSighting(R) <- .print("I cannot see ", R, " to guide it").
 
-+!keepGuiding(R) : guiding(R) & guideSlice(S)
-<- guide(R, S);
++!keepGuiding(R) : guiding(R) & guideSlice(S) & guideName(R, N)
+<- guide(N, S);
     !keepGuiding(R).
 +!keepGuiding(R) <- true.
--!keepGuiding(R) <- .print("I lost sight of ", R); -guiding(R).
+-!keepGuiding(R) <- .print("I lost sight of ", R); -guiding(R); !guidedLost(R).
++!guidedLost(R) <- true.     // the including program may hand the guiding on (fleet_robot.asl)
 
 +!stopGuiding[source(R)] : guiding(R)
 <- -guiding(R);
@@ -56,10 +72,8 @@ sideOf(L, -1) :- L < 0.
 
 // The task reach(R, Forward, Left): the point Forward m ahead of R and Left m to its left.
 // The offer is the distance I would drive; I can only offer while I see R.
-+cfp(reach(R, F, L))[source(R)]
-: located(R, X, Y, T) & pos(HX, HY, HT)
-  & compose(pose(X, Y, T), pose(F, L, 0), Goal) & distance(pose(HX, HY, HT), Goal, Cost)
-<- -+offered(reach(R, F, L), pose(X, Y, T), Goal);
++cfp(reach(R, F, L))[source(R)] : reachGoal(R, F, L, Seen, Goal, Cost)
+<- -+offered(reach(R, F, L), Seen, Goal);
     .send(R, tell, propose(reach(R, F, L), Cost)).
 +cfp(Task)[source(R)]
 <- .print("I cannot offer to do ", Task, ": I do not see ", R, " or do not know where I am");

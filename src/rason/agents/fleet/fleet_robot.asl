@@ -5,7 +5,11 @@
 // robot awarded; a robot with a camera offers to watch ("observe" in the directory) and,
 // awarded, runs Helper's dialogue for that caller. Roles come from what happens and what a
 // robot has, never from its name. Unlike the pair, no robot stops the MAS after its
-// diagnosis: the others may still need it to watch them.
+// diagnosis: the others may still need it to watch them. With recovery(on) the mission goes
+// on after the diagnosis with each of the pair's recoveries: compensation, a guide for an
+// odometry fault and a robot that takes the mission over for both actuators, each chosen by
+// contract net as the watcher is, each running the pair's own plans (faulty_recovery.asl,
+// helper_recovery.asl).
 
 // contract_net.asl first: its -present plans (a contractor that leaves, a caller that
 // leaves) are the ones a fleet robot runs.
@@ -14,6 +18,9 @@
 
 callAgain(2000).       // ms before a caller that nobody could help calls again (within helpTimeout)
 searchCost(360).       // the bid of a robot that must search for the caller: a full turn at worst
+unseenReachCost(100).  // m: the bid to take over the mission of a robot I do not see (yet)
+recoveryCalls(30).     // calls for a guide or a robot to take my mission over, callAgain
+                       // apart, before the mission is given up
 
 /* Which robot the camera sees */
 
@@ -29,8 +36,10 @@ cameraName(A, N)
 
 /* Bids: lower is better, in degrees I would turn before my camera faces the caller */
 
-// I watch others only once my own mission ended without a fault.
-canWatch :- diagnosed(none).
+// I watch others only once my own mission ended without a fault (with recovery(on), once
+// its outcome is reported: a false positive's mission goes on first).
+canWatch :- diagnosed(none) & not recovery(on).
+canWatch :- diagnosed(none) & missionEnded.
 
 // Seen now: the camera's angle to it.
 bid(help(C, _), C, B) :- canWatch & inView(C, Deg, _, _) & B = math.abs(Deg).
@@ -45,6 +54,12 @@ bid(help(C, at(X, Y)), C, B)
 // Neither: a search from where I face.
 bid(help(C, Where), C, B)
     :- canWatch & not inView(C, _, _, _) & not (Where = at(_, _) & mapPose(_, _, _)) & searchCost(B).
+// Guiding a robot starts as watching it does: by facing it.
+bid(guide(C, Where), C, B) :- bid(help(C, Where), C, B).
+// Taking a mission over: the metres I would drive to its goal, seen from where I see the
+// caller (helper_recovery.asl's reachGoal); not seen, a search first, then an unknown way.
+bid(reach(C, F, L), C, B) :- canWatch & reachGoal(C, F, L, _, _, B).
+bid(reach(C, F, L), C, B) :- canWatch & not locatedAs(C, _, _, _) & unseenReachCost(B).
 
 // A ratio that rounding may have put just outside [-1, 1], as a cosine.
 cosine(R, 1) :- R > 1.
@@ -67,10 +82,12 @@ whereIAm(unknown) :- not mapPose(_, _, _).
 
 /* Plans */
 
-// A camera (its frames) makes me a robot that can watch others.
+// A camera (its frames) makes me a robot that can watch others, and, with recovery(on)
+// (my own pose perceived), guide them and take their missions over.
 +cameraFrame(_, _) : not offering(observe)
 <- +offering(observe);
-    .df_register("observe").
+    .df_register("observe");
+    if (recovery(on)) { .df_register("reach") }.
 
 // As Faulty: start once another robot is present (or after 20 s alone).
 +!start
@@ -100,6 +117,9 @@ whereIAm(unknown) :- not mapPose(_, _, _).
 // stops (a move under way is taken back); the contract net awards the next bidder.
 -awarded(_, help(Me, _), P) : .my_name(Me) & not diagnosed(_)
 <- .drop_desire(tryMove).
+// A guide lost or released: its sightings go with it (a later award to the same robot must
+// wait for a new one).
+-awarded(_, guide(Me, _), P) : .my_name(Me) <- .abolish(seenAt(_, _, _)[source(P)]).
 -awarded(_, _, _) <- true.
 
 // Only the robot watching me now takes part in my dialogue: a robot lost meanwhile may
@@ -116,7 +136,11 @@ whereIAm(unknown) :- not mapPose(_, _, _).
 // recovery(on) (fleet_robot_mission.mas2j) the mission then goes on as the pair's Faulty's
 // does (faulty_recovery.asl, included below).
 +!afterDiagnosis(D) : helpTask(Task) <- !contractDone(Task); -helpTask(Task); !afterDiagnosis(D).
-+!finish <- true.
+// My part ends (the mission's outcome reported): whoever still works for me is released.
++!finish
+<- +missionEnded;
+    .findall(Task, awarded(_, Task, _), Tasks);
+    for (.member(Task, Tasks)) { !contractDone(Task) }.
 
 { include("../case_study/faulty_dialogue.asl") }
 
@@ -135,24 +159,103 @@ whereIAm(unknown) :- not mapPose(_, _, _).
 +robot(N, D, _, _) : helping(R) & cameraName(R, N) <- -+lastSeen(R, D).
 
 // Released, revoked, failed (I could not find it) or its caller gone: nothing of C is kept
-// and nothing done for it goes on. (The search is carryOut's: the contract net drops it on a
-// revoke; dropping it here would also drop the failure plan that tells the caller.)
--committed(_, help(C, _), C) <- !stopWatching(C).
+// and nothing done for it goes on (a guide action under way stops). (The search and the
+// drive to a goal are carryOut's: the contract net drops them on a revoke; dropping them
+// here would also drop the failure plans that tell the caller.)
+-committed(_, _, C) <- !stopWatching(C).
 +!stopWatching(C)
 <- .drop_desire(trackMe);
     .drop_desire(giveFeedback);
+    -guiding(C);
+    .drop_desire(keepGuiding(C));
+    .drop_desire(guidedLost(C));
+    .abolish(offered(_, _, _));
     -helping(C);
     -foundRobot(C, _, _, _);
     -viewpoint(_, _, _);
     -lastSeen(C, _).
 
+// Awarded a guide: I face the caller, then guide it as the pair's helper does
+// (helper_recovery.asl): robot_guide streams its pose as my camera sees it, and I turn to keep
+// it in view. A full circle without seeing it fails the task: the caller awards the next.
++!carryOut(guide(C, _), C)
+<- .print("Guiding ", C);
+    -+centringTurns(0);
+    !findRobot(C, 0);
+    !startGuiding(C).
+
+// Lost sight of the robot I guide (robot_guide's guide ended lost: e.g. it turned side-on,
+// one cylinder behind the other, and stopped there, its guided pose gone stale): I look for it
+// again and guide it on, in the same odometry frame, so its drive goes on. Not found (a
+// full circle): the task failed, and its caller awards the next bidder.
++!guidedLost(C) : committed(_, guide(C, _), C)
+<- .print("I look for ", C, " again");
+    -+centringTurns(0);
+    !findRobot(C, 0);
+    +guiding(C);
+    !!keepGuiding(C).
+-!guidedLost(C) : committed(Id, guide(C, Where), C)
+<- !sendOrFail(C, tell, failed(Id));
+    -committed(Id, guide(C, Where), C).
+
+// Awarded a mission: I face the caller, then reach its goal as the pair's helper does
+// (helper_recovery.asl's takeOver, which tells the caller done or failure).
++!carryOut(reach(C, F, L), C)
+<- .print("Taking over the mission of ", C);
+    -+centringTurns(0);
+    !findRobot(C, 0);
+    .wait(reachGoal(C, F, L, _, _, _), 5000);
+    ?reachGoal(C, F, L, Seen, Goal, _);
+    -+offered(reach(C, F, L), Seen, Goal);
+    !takeOver(reach(C, F, L), C).
+
 { include("../case_study/helper_dialogue.asl") }
 
-// Recovery in the fleet so far: compensating a one-wheel fault, and going on after a false
-// positive. Being guided (odometry) and delegating the mission (both actuators) need a
-// watcher that runs helper_recovery.asl, which no fleet robot does yet: those missions end
-// as not completed, with the reason in the log.
+/* Recovery by another robot (recovery(on)): guided, or my mission delegated */
+
+// The pair's Faulty asks the robot that watched it; I ask by contract net, as for the
+// watcher: the guide among the robots that observe (odometry), the robot that takes my
+// mission over among those that offer "reach" (both actuators). The plans that follow the
+// choice are the pair's (faulty_recovery.asl's !guidedBy and !awaitDelegate; the
+// contractor's are helper_recovery.asl's).
++!beGuided : .my_name(Me) & whereIAm(Where) <- !contract("observe", guide(Me, Where)).
++!delegateMission : delegatedTask(Task) <- !contract("reach", Task).
+
++!contracted(guide(_, _), P) <- .print(P, " will guide me"); !guidedBy(P).
++!contracted(reach(Me, F, L), P) <- .print(P, " takes my mission over"); !awaitDelegate(reach(Me, F, L), P).
+
+// My decomposer reads the guided poses from the guide's robot_guide (/<its robot>/located/<me>:
+// a robot's namespace is its name in the world, as in rason_sim's fleet.yaml).
++!guidedPoseFrom(H) : .my_name(Me) & cameraName(H, HN) & cameraName(Me, MN)
+<- .concat("/", HN, "/located/", MN, Topic);
+    pose_source(guided, Topic).
+
+// The guide or the delegate did not do: the next bidder (a new intention: the contract net
+// drops the one working with the contractor lost).
++!guidanceFailed(H) : .my_name(Me) & awarded(_, guide(Me, Where), H)
+<- .print("Guided by ", H, " I could not complete the mission; the next bidder");
+    !!contractFailed(guide(Me, Where)).
++!notDelegated(Task, P) : awarded(_, Task, P)
+<- .print(P, " did not complete my mission; the next bidder");
+    !!contractFailed(Task).
+
+// Nobody can (any more): call again, recoveryCalls times at most, then the mission ends.
+recoveryOf(guide(_, _), guided, odometry).
+recoveryOf(reach(_, _, _), delegate, both_actuators).
++!uncontracted(Task, Reason) : recoveryOf(Task, _, Diagnosis) & recoveryCalls(N) & N > 1 & callAgain(W)
+<- -+recoveryCalls(N - 1);
+    .print("Nobody can do ", Task, " now (", Reason, "); I call again in ", W / 1000, " s");
+    .wait(W);
+    !!recover(Diagnosis).
++!uncontracted(Task, Reason) : recoveryOf(Task, Recovery, Diagnosis)
+<- .print("Nobody could do ", Task, " (", Reason, ")");
+    !missionOver(false, [], Recovery, Diagnosis).
+
 { include("../case_study/faulty_recovery.asl") }
 +!afterDiagnosis(_) <- true.     // without recovery(on): the diagnosis ends my part
+
+// The guide and the delegate: helper_recovery.asl's plans, started by carryOut above. (Its
+// guideMe, cfp and acceptProposal are the pair's entry points, which no fleet robot sends.)
+{ include("../case_study/helper_recovery.asl") }
 
 { include("../case_study/send_safely.asl") }

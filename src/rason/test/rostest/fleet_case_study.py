@@ -14,12 +14,15 @@ Private parameters:
                     diagnosis (fleet_case_study.launch recovery:=true) with that recovery,
                     judged from the simulator's true poses: the goal 1 m ahead of the robot's
                     start reached within ~tolerance, and the robot back within ~tolerance of
-                    its start
+                    its start; for delegate, the goal reached by the robot that took the
+                    mission over (the one it awarded reach(...) last, not a faulty one). A
+                    guide (guided) or a delegate must have been chosen by contract net.
   ~tolerance        metres (0.15)
   ~timeout          seconds (wall) for the whole scenario
 """
 import math
 import os
+import re
 import signal
 import threading
 import time
@@ -36,6 +39,9 @@ from rason_msgs.msg import AgentMessage
 
 
 MISSION_LENGTH = 1.0     # metres ahead of each robot's start (the thesis's mission)
+FLEET = ['r%d' % k for k in range(1, 9)]     # rason_sim's fleet.yaml
+# award(contract(r4_robot,2),reach(r4_robot,...)): the contract's id and the task's functor
+AWARD = re.compile(r'award\((contract\([^()]*\)),(\w+)\(')
 
 
 def robot_of(agent):
@@ -56,6 +62,11 @@ class TrueTrack(object):
     def __init__(self):
         self.start = self.latest = self.at_end = None
         self.closest = math.inf
+        self.poses = []
+
+    def closest_to(self, point):
+        """How close (m) the robot came to ``point`` (x, y)."""
+        return min((math.hypot(x - point[0], y - point[1]) for x, y, _ in self.poses), default=math.inf)
 
     def goal(self):
         x, y, yaw = self.start
@@ -65,28 +76,29 @@ class TrueTrack(object):
         if self.start is None:
             self.start = pose
         self.latest = pose
+        self.poses.append(pose)
         gx, gy = self.goal()
         self.closest = min(self.closest, math.hypot(pose[0] - gx, pose[1] - gy))
 
 
 class FleetRun(object):
     """The agent messages (with the wall time each was heard), the first diagnosis and mission
-    outcome of each agent, and the true poses of the robots of ``tracked`` agents."""
+    outcome of each agent, and the true poses of every robot of the fleet (``tracks``, by robot)."""
 
-    def __init__(self, tracked=()):
+    def __init__(self):
         self._lock = threading.Lock()
         self._messages = []
         self._diagnoses = {}
         self._missions = {}
-        self.tracks = {agent: TrueTrack() for agent in tracked}
-        for agent in tracked:
-            rospy.Subscriber('/%s/true_pose' % robot_of(agent), PoseStamped, self._on_pose, agent, queue_size=50)
+        self.tracks = {robot: TrueTrack() for robot in FLEET}
+        for robot in FLEET:
+            rospy.Subscriber('/%s/true_pose' % robot, PoseStamped, self._on_pose, robot, queue_size=50)
         rospy.Subscriber('/rason/messages', AgentMessage, self._on_message, queue_size=1000)
         rospy.Subscriber('/diagnostics', DiagnosticArray, self._on_diagnostics, queue_size=100)
 
-    def _on_pose(self, msg, agent):
+    def _on_pose(self, msg, robot):
         with self._lock:
-            self.tracks[agent].add(planar(msg))
+            self.tracks[robot].add(planar(msg))
 
     def _on_message(self, msg):
         with self._lock:
@@ -100,7 +112,7 @@ class FleetRun(object):
                     self._diagnoses.setdefault(values.get('agent'), values)
                 elif status.name == MISSION_STATUS_NAME and values.get('agent') not in self._missions:
                     self._missions[values.get('agent')] = values
-                    track = self.tracks.get(values.get('agent'))
+                    track = self.tracks.get(robot_of(values.get('agent') or ''))
                     if track is not None:
                         track.at_end = track.latest
 
@@ -116,14 +128,23 @@ class FleetRun(object):
         with self._lock:
             return self._missions.get(agent)
 
-    def awards(self, caller):
-        """(heard at, robot) of each award the caller sent, in order."""
-        return [(t, r) for t, s, r, c in self.messages() if s == caller and c.startswith('award(')]
+    def awards(self, caller, task='help'):
+        """(heard at, robot) of each award of a ``task`` (help, guide, reach) the caller sent, in order."""
+        return [(t, r) for t, r, _ in self._awards(caller, task)]
 
-    def helpers(self, caller):
-        """The robots that accepted the caller's award, in order."""
-        awarded = {r for _, r in self.awards(caller)}
-        return [s for _, s, r, c in self.messages() if r == caller and c.startswith('accepted(') and s in awarded]
+    def _awards(self, caller, task):
+        found = []
+        for t, s, r, c in self.messages():
+            match = AWARD.match(c) if s == caller else None
+            if match and match.group(2) == task:
+                found.append((t, r, match.group(1)))
+        return found
+
+    def helpers(self, caller, task='help'):
+        """The robots that accepted the caller's award of a ``task``, in order."""
+        awarded = {(r, contract) for _, r, contract in self._awards(caller, task)}
+        return [s for _, s, r, c in self.messages()
+                if r == caller and c.startswith('accepted(') and (s, c[len('accepted('):-1]) in awarded]
 
     def said(self, sender, receiver, prefix):
         return [t for t, s, r, c in self.messages() if s == sender and r == receiver and c.startswith(prefix)]
@@ -156,7 +177,7 @@ class TestFleetCaseStudy(unittest.TestCase):
         timeout = float(rospy.get_param('~timeout', 240.0))
         missions = dict(pair.split(':') for pair in rospy.get_param('~missions', '').split())
         tolerance = float(rospy.get_param('~tolerance', 0.15))
-        run = FleetRun(tracked=missions)
+        run = FleetRun()
         deadline = time.monotonic() + timeout
 
         killed_helper = None
@@ -195,16 +216,28 @@ class TestFleetCaseStudy(unittest.TestCase):
             await_condition('the mission outcome of %s' % agent, max(1.0, deadline - time.monotonic()),
                             lambda: run.mission(agent) is not None, run.messages)
         for agent, recovery in missions.items():
-            mission, track = run.mission(agent), run.tracks[agent]
+            mission, track = run.mission(agent), run.tracks[robot_of(agent)]
             context = '%s: mission %s; diagnosis %s' % (agent, mission, run.diagnosis(agent))
             self.assertEqual(mission.get('recovery'), recovery, context)
             self.assertEqual(mission.get('completed'), 'true', context)
+            contracted = {'guided': 'guide', 'delegate': 'reach'}.get(recovery)
+            if contracted:
+                chosen = run.helpers(agent, contracted)
+                self.assertTrue(chosen, '%s: no robot took %s(...) by contract net; %s' % (agent, contracted, context))
+                self.assertNotIn(chosen[-1], expected, '%s: %s, a faulty robot, took %s' % (agent, chosen[-1], contracted))
+            if recovery == 'delegate':
+                by = mission.get('by')
+                self.assertEqual(by, chosen[-1], context)
+                closest = run.tracks[robot_of(by)].closest_to(track.goal())
+                self.assertLessEqual(closest, tolerance, '%s came no closer than %.3f m to the goal of %s; %s'
+                                     % (by, closest, agent, context))
+                rospy.loginfo('%s: goal within %.3f m, reached by %s (delegate)', agent, closest, by)
+                continue
             self.assertLessEqual(track.closest, tolerance, '%s came no closer than %.3f m to its goal; %s'
                                  % (agent, track.closest, context))
             back = math.hypot(track.at_end[0] - track.start[0], track.at_end[1] - track.start[1])
             self.assertLessEqual(back, tolerance, '%s ended %.3f m from its start; %s' % (agent, back, context))
             rospy.loginfo('%s: goal within %.3f m, back %.3f m from its start (%s)', agent, track.closest, back, recovery)
-
 
 if __name__ == '__main__':
     rospy.init_node('test_fleet_case_study')
