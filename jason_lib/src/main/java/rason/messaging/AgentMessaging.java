@@ -211,10 +211,12 @@ public final class AgentMessaging {
         if (!asks.isEmpty() || asks.hasLost())
             for (RemoteAsks.Failure f : asks.settle(waiting::containsKey, port.rosNow(), stopping))
                 fail(f);
+        if (receipts.isEmpty())
+            return;
         long now = port.wallNow();
         long ttl = port.messageTtlNanos();
         // nothing can end without a receipt, a loss, the TTL or the stop: no look at every send in every cycle
-        if (receipts.isEmpty() || !receipts.hasNews() && !receipts.due(now, ttl) && stopping == null)
+        if (!receipts.hasNews() && !receipts.due(now, ttl) && stopping == null)
             return;
         for (SentReceipts.Outcome o : receipts.settle(id -> waiting.containsKey(receiptKey(id)), now, ttl, stopping))
             end(o);
