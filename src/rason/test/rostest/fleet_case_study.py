@@ -61,8 +61,12 @@ class TrueTrack(object):
 
     def __init__(self):
         self.start = self.latest = self.at_end = None
-        self.closest = math.inf
         self.poses = []
+
+    @property
+    def closest(self):
+        """How close (m) the robot came to its own goal."""
+        return self.closest_to(self.goal()) if self.start is not None else math.inf
 
     def closest_to(self, point):
         """How close (m) the robot came to ``point`` (x, y)."""
@@ -77,8 +81,6 @@ class TrueTrack(object):
             self.start = pose
         self.latest = pose
         self.poses.append(pose)
-        gx, gy = self.goal()
-        self.closest = min(self.closest, math.hypot(pose[0] - gx, pose[1] - gy))
 
 
 class FleetRun(object):
@@ -238,6 +240,7 @@ class TestFleetCaseStudy(unittest.TestCase):
             back = math.hypot(track.at_end[0] - track.start[0], track.at_end[1] - track.start[1])
             self.assertLessEqual(back, tolerance, '%s ended %.3f m from its start; %s' % (agent, back, context))
             rospy.loginfo('%s: goal within %.3f m, back %.3f m from its start (%s)', agent, track.closest, back, recovery)
+
 
 if __name__ == '__main__':
     rospy.init_node('test_fleet_case_study')
