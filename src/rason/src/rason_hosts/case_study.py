@@ -42,6 +42,14 @@ FLEET_CONF = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..'
                           'mosquitto', 'fleet.conf')
 
 
+def tune_broker_host(hosts, name='broker'):
+    """What docs/guides/hosts.md asks of a broker's host: retransmit thin streams (a pose a
+    robot relays, agent messages) at a steady timeout, not an exponential backoff."""
+    tuned = hosts.call(name, ['sysctl', '-qw', 'net.ipv4.tcp_thin_linear_timeouts=1'])
+    if tuned.returncode:
+        raise RuntimeError('cannot set the broker host\'s thin-stream timeouts: %s' % tuned.stderr.strip())
+
+
 class Transcript:
     """Every line the scenario's processes print, (wall time, source, text), in arrival order,
     read by a thread per process so that no pipe fills; waits for a line matching a pattern."""
@@ -243,11 +251,7 @@ class CaseStudyOnHosts:
 
     def _start_broker(self):
         address = self.hosts.address('broker')
-        # what docs/guides/hosts.md asks of a broker's host: retransmit thin streams (a pose a
-        # robot relays, agent messages) at a steady timeout, not an exponential backoff
-        tuned = self.hosts.call('broker', ['sysctl', '-qw', 'net.ipv4.tcp_thin_linear_timeouts=1'])
-        if tuned.returncode:
-            raise RuntimeError('cannot set the broker host\'s thin-stream timeouts: %s' % tuned.stderr.strip())
+        tune_broker_host(self.hosts)
         broker = self.hosts.run_python('broker', 'rason_hosts.broker', [
             '--config', FLEET_CONF, '--listen', address, '--port', BROKER_PORT],
             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=False)
