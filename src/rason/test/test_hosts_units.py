@@ -12,7 +12,7 @@ import rason_hosts
 from rason_hosts import rules
 from rason_hosts.addresses import check_bind_address, host_address
 from rason_hosts.broker import render
-from rason_hosts.hosts import read_line, stop_process
+from rason_hosts.hosts import HostsError, read_line, stop_process
 from rason_hosts.probe import tcp_rtt
 from rason_hosts.relay import get_relay_delay, set_relay_delay
 
@@ -235,6 +235,20 @@ def test_broker_wrapper_serves_on_loopback_and_stops_on_sigint():
         assert broker.wait(10) == 0
     finally:
         stop_process(broker)
+
+
+def test_a_line_that_never_comes_is_reported_with_the_lines_that_came_instead():
+    proc = subprocess.Popen([sys.executable, '-c', 'import sys, time\nfor i in range(12): print("line", i)\n'
+                             'sys.stdout.flush(); time.sleep(30)'], stdout=subprocess.PIPE)
+    try:
+        assert read_line(proc, 10, 'line 1') == 'line 1'
+        with pytest.raises(HostsError) as failed:
+            read_line(proc, 0.5, 'never printed')
+        report = str(failed.value)
+        assert "no line with 'never printed'" in report
+        assert 'line 11' in report and 'line 4' in report and 'line 3' not in report, report
+    finally:
+        stop_process(proc)
 
 
 @pytest.mark.parametrize('names, run_id', [(['switch'], None), (['a', 'a'], None),

@@ -8,6 +8,7 @@ run time (loss, rate, cut) and every process, namespace and rule is removed on c
 interpreter exit, or by cleanup() after a crashed run. No rospy here.
 """
 import atexit
+import collections
 import os
 import re
 import secrets
@@ -99,6 +100,7 @@ def cleanup(prefix=DEFAULT_PREFIX, all_runs=False):
 
 
 _pending = weakref.WeakKeyDictionary()   # proc -> bytes read from its stdout, not yet a line
+SKIPPED_SHOWN = 8                        # lines a failed read_line quotes, to show what came instead
 
 
 def read_line(proc, timeout, contains=''):
@@ -110,6 +112,7 @@ def read_line(proc, timeout, contains=''):
     deadline = time.monotonic() + timeout
     fd = proc.stdout.fileno()
     pending = _pending.get(proc, b'')
+    skipped = collections.deque(maxlen=SKIPPED_SHOWN)
     try:
         while True:
             while b'\n' in pending:
@@ -117,10 +120,11 @@ def read_line(proc, timeout, contains=''):
                 text = line.decode(errors='replace')
                 if contains in text:
                     return text
+                skipped.append(text)
             left = deadline - time.monotonic()
             if left <= 0 or not select.select([fd], [], [], left)[0]:
-                raise HostsError('no line with %r from %r within %g s'
-                                 % (contains, proc.args, timeout))
+                raise HostsError('no line with %r from %r within %g s; the last lines before it:\n%s'
+                                 % (contains, proc.args, timeout, '\n'.join(skipped) or '(none)'))
             data = os.read(fd, 65536)
             if not data:
                 raise HostsError('%r ended (exit %r) before printing %r'
