@@ -1,9 +1,13 @@
 """The topic relay without ROS or a broker (rason_relay): sealing, what a receiver drops, the
-replay gate, the parameters, and the fleet key file as rason_mas reads it."""
+replay gate, the parameters, the fleet key file as rason_mas reads it, and how the broker
+connection is tuned."""
+import socket
+
 import pytest
 
 from rason_bridge.fleet_key import generate_key, key_id, parse_keys
 from rason_relay.envelope import Refused, ReplayGate, open_sealed, seal
+from rason_relay.node import TCP_THIN_LINEAR_TIMEOUTS, _tune_for_thin_stream
 from rason_relay.relay import Inbound, Outbound
 from rason_relay.settings import SettingsError, broker_topic, parse_settings
 
@@ -149,3 +153,12 @@ def test_settings_resolve_names_and_refuse_what_cannot_work():
                             ({'mqtt_prefix': 'a+b'}, 'mqtt_prefix')):
         with pytest.raises(SettingsError, match=message):
             settings(**params)
+
+
+def test_the_broker_connection_is_tuned_for_a_thin_stream_under_a_loss_based_congestion_control():
+    with socket.socket() as sock:
+        _tune_for_thin_stream(sock)
+        assert sock.getsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY)
+        assert sock.getsockopt(socket.IPPROTO_TCP, TCP_THIN_LINEAR_TIMEOUTS) == 1
+        # BBR (this machine's default) would make Linux ignore the thin-stream timeouts
+        assert sock.getsockopt(socket.IPPROTO_TCP, socket.TCP_CONGESTION, 16).rstrip(b'\0') != b'bbr'

@@ -74,8 +74,23 @@ def _tune_for_thin_stream(sock):
     try:
         sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
         sock.setsockopt(socket.IPPROTO_TCP, TCP_THIN_LINEAR_TIMEOUTS, 1)
+        # BBR never leaves initial slow start in Linux's eyes, so no stream of it counts as thin
+        if sock.getsockopt(socket.IPPROTO_TCP, socket.TCP_CONGESTION, 16).rstrip(b'\0') == b'bbr':
+            _use_loss_based_congestion_control(sock)
     except OSError as e:
         rospy.logwarn('topic_relay: cannot tune the broker connection for a thin stream: %s', e)
+
+
+def _use_loss_based_congestion_control(sock):
+    for name in (b'cubic', b'reno'):     # reno is always allowed; cubic only when listed
+        try:
+            sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_CONGESTION, name)
+            return
+        except OSError:
+            continue
+    rospy.logwarn('topic_relay: the broker connection uses BBR, under which Linux does not retransmit '
+                  'a thin stream at a steady timeout; allow reno or cubic '
+                  '(net.ipv4.tcp_allowed_congestion_control)')
 
 
 def _wait_for_keys(path):
