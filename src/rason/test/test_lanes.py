@@ -1,5 +1,6 @@
 """rason_tools.lanes: make test's jobs in lanes, without ROS (the jobs here are shell lines)."""
 import os
+import sys
 
 from rason_tools import lanes
 from rason_tools.lanes import Job
@@ -57,6 +58,15 @@ def test_each_job_ends_with_its_own_exit_status_and_log(tmp_path):
     assert ended['good'][0] == 0 and ended['bad'][0] == 3
     assert any(line.startswith('bad') and 'FAILED, exit status 3' in line for line in said)
     assert os.path.isfile(lanes.log_path(str(tmp_path / 'logs'), 'bad'))
+
+
+def test_a_job_is_charged_the_cpu_time_of_its_processes(tmp_path):
+    spin = "import time\nend = time.process_time() + 0.3\nwhile time.process_time() < end: pass\n"
+    jobs = [Job('busy', ['sh', '-c', '%s -c "$0"; %s -c "$0"' % (sys.executable, sys.executable), spin], False),
+            Job('idle', ['sleep', '0.3'], False)]
+    ended = lanes.run_jobs(jobs, 2, str(tmp_path / 'logs'), say=lambda line: None)
+    assert 0.6 <= ended['busy'][2] < 5, ended
+    assert ended['idle'][2] < 0.2 and ended['idle'][1] >= 0.3, ended
 
 
 def test_a_test_over_the_fleet_channel_runs_twice_named_as_catkin_names_it(tmp_path):

@@ -32,6 +32,7 @@ ALONE_MARK = '<!-- make test: alone -->'
 FLEET_CHANNEL_LAUNCH = 'test/fleet_channel.launch'
 PARTS = ('hosts', 'javatest', 'pytest', 'gtest', 'rostest')
 FAILED_LOG_LINES = 60
+SLOWEST = '--durations=10'      # the pytest logs name their slowest tests, for the next trim
 #: Jobs whose last line is their count of tests (the rostests have summarize_results.py).
 SUITES_WITH_A_SUMMARY = ('hosts pytest', 'javatest', 'pytest')
 
@@ -61,12 +62,12 @@ def suite_jobs(parts, results_dir, make='make'):
     one lane while the other runs through the rest."""
     jobs = []
     if 'hosts' in parts:
-        jobs.append(Job('hosts pytest', [PYTHON, '-m', 'pytest', '-q', '-p', 'no:cacheprovider']
+        jobs.append(Job('hosts pytest', [PYTHON, '-m', 'pytest', '-q', '-p', 'no:cacheprovider', SLOWEST]
                         + sorted(glob.glob(os.path.join(REPOSITORY, HOSTS_TESTS))), False))
     if 'javatest' in parts:
         jobs.append(Job('javatest', [make, '--no-print-directory', '-C', REPOSITORY, 'javatest'], False))
     if 'pytest' in parts:
-        jobs.append(Job('pytest', [PYTHON, '-m', 'pytest', '-q', '-p', 'no:cacheprovider', 'src',
+        jobs.append(Job('pytest', [PYTHON, '-m', 'pytest', '-q', '-p', 'no:cacheprovider', SLOWEST, 'src',
                                    '--ignore-glob=' + HOSTS_TESTS], False))
     if 'gtest' in parts:
         # after JUnit and pytest, one compiler at a time, as before the lanes: the hosts tests'
@@ -92,8 +93,11 @@ def next_job(pending, running, lanes):
 
 
 def run_jobs(jobs, lanes, log_dir, say=lambda line: print(line, flush=True), env=None):
-    """Runs the jobs; returns ``{name: (exit status, seconds)}``. Blocks on the children's
-    exits (``os.wait``), so a lane is refilled the moment its job ends."""
+    """Runs the jobs; returns ``{name: (exit status, seconds, CPU seconds)}``. Blocks on the
+    children's exits (``os.wait4``), so a lane is refilled the moment its job ends. The CPU
+    time (user and system) is the job's and that of every process of it that was waited for:
+    on two cores, what the lanes can finish in a given time depends on it more than on the
+    jobs' wall times."""
     os.makedirs(log_dir, exist_ok=True)
     pending, running, ended = list(jobs), {}, {}
     while pending or running:
@@ -105,14 +109,14 @@ def run_jobs(jobs, lanes, log_dir, say=lambda line: print(line, flush=True), env
                                         cwd=REPOSITORY, env=env)
             running[proc.pid] = (job, proc, time.monotonic())
             continue
-        pid, status = os.wait()
+        pid, status, usage = os.wait4(-1, 0)
         if pid not in running:
             continue
         job, proc, started = running.pop(pid)
         proc.returncode = os.waitstatus_to_exitcode(status)
-        ended[job.name] = (proc.returncode, time.monotonic() - started)
-        say('%-40s %s (%.0f s)' % (job.name, 'passed' if proc.returncode == 0 else
-                                   'FAILED, exit status %d' % proc.returncode, ended[job.name][1]))
+        ended[job.name] = (proc.returncode, time.monotonic() - started, usage.ru_utime + usage.ru_stime)
+        say('%-40s %s (%.0f s, CPU %.0f s)' % ((job.name, 'passed' if proc.returncode == 0 else
+                                               'FAILED, exit status %d' % proc.returncode) + ended[job.name][1:]))
     return ended
 
 
@@ -149,12 +153,13 @@ def main(argv=None):
     for job in jobs:
         if job.name in SUITES_WITH_A_SUMMARY and job.name in ended:
             print('%s: %s' % (job.name, last_line(log_path(log_dir, job.name))))
-    failed = [name for name, (status, _) in ended.items() if status != 0]
+    failed = [name for name, (status, _, _) in ended.items() if status != 0]
     for name in failed:
         print('---- %s (log %s), its last lines:' % (name, log_path(log_dir, name)))
         print('\n'.join(tail(log_path(log_dir, name), FAILED_LOG_LINES)))
-    print('%d jobs in %d lanes, %.0f s: %s' % (len(ended), args.lanes, time.monotonic() - started,
-                                              'all passed' if not failed else 'FAILED: ' + ', '.join(failed)))
+    print('%d jobs in %d lanes, %.0f s, CPU %.0f s: %s' % (
+        len(ended), args.lanes, time.monotonic() - started, sum(cpu for _, _, cpu in ended.values()),
+        'all passed' if not failed else 'FAILED: ' + ', '.join(failed)))
     return 1 if failed else 0
 
 
