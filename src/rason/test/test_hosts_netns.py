@@ -65,6 +65,9 @@ def test_each_host_has_its_address_and_runs_ip_and_its_own_loopback():
         assert hosts.address('a') + '/24' in shown and '127.0.0.1/8' in shown
         assert hosts.address('b') not in shown
         assert hosts.address('a').startswith('198.18.')
+        # as a Debian host: loss-based, so that a thin stream is retransmitted at a steady timeout
+        chosen = hosts.call('b', ['sysctl', '-n', 'net.ipv4.tcp_congestion_control']).stdout.strip()
+        assert chosen == 'reno', chosen
 
 
 @pytest.mark.skipif(not shutil.which('roscore'), reason='ROS (roscore) not installed')

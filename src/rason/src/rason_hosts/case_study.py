@@ -44,16 +44,11 @@ FLEET_CONF = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..'
 
 def tune_broker_host(hosts, name='broker'):
     """What the multi-robot guide asks of a broker's host: retransmit thin streams (a pose a
-    robot relays, agent messages) at a steady timeout, not an exponential backoff.
-
-    That needs a loss-based congestion control: under BBR (this machine's default, which a
-    new namespace inherits) Linux never counts a stream as thin. Debian's default, cubic,
-    cannot be chosen inside a namespace unless it is allowed; reno always can.
-    """
-    for setting in ('net.ipv4.tcp_thin_linear_timeouts=1', 'net.ipv4.tcp_congestion_control=reno'):
-        tuned = hosts.call(name, ['sysctl', '-qw', setting])
-        if tuned.returncode:
-            raise RuntimeError('cannot set %s on the broker host: %s' % (setting, tuned.stderr.strip()))
+    robot relays, agent messages) at a steady timeout, not an exponential backoff (under the
+    loss-based congestion control every host of :class:`Hosts` has)."""
+    tuned = hosts.call(name, ['sysctl', '-qw', 'net.ipv4.tcp_thin_linear_timeouts=1'])
+    if tuned.returncode:
+        raise RuntimeError('cannot set the broker host\'s thin-stream timeouts: %s' % tuned.stderr.strip())
 
 
 class Transcript:

@@ -99,6 +99,11 @@ def cleanup(prefix=DEFAULT_PREFIX, all_runs=False):
     return removed
 
 
+#: A new namespace inherits this machine's congestion control (BBR here), under which Linux
+#: never retransmits a thin stream at a steady timeout. A Debian host has cubic, loss-based,
+#: which a namespace cannot choose unless it is allowed; reno is the loss-based one it can.
+HOST_CONGESTION_CONTROL = 'net.ipv4.tcp_congestion_control=reno'
+
 _pending = weakref.WeakKeyDictionary()   # proc -> bytes read from its stdout, not yet a line
 SKIPPED_SHOWN = 8                        # lines a failed read_line quotes, to show what came instead
 
@@ -260,6 +265,7 @@ class Hosts:
             _ip('ip', '-n', namespace, 'addr', 'add',
                 '%s/%d' % (self._addresses[name], prefix_len), 'dev', 'eth0')
             _ip('ip', '-n', namespace, 'link', 'set', 'eth0', 'up')
+            _ip('ip', 'netns', 'exec', namespace, 'sysctl', '-qw', HOST_CONGESTION_CONTROL)
 
     def close(self):
         """Stop every process started here, then delete every namespace. Idempotent."""
