@@ -6,9 +6,11 @@ broker on a third host behind 20 % loss each way on each robot's link and 100 ms
 way. `seer` publishes a pose on /seer/located/seen at 10 Hz; `seen`'s relay publishes it on
 its own master, in order and fresh: half the poses less than 1 s late. (Not each one, nor an
 average over ten: at 20 % loss each way a retransmission is itself lost now and then, and TCP
-then holds back every pose behind it for a second or two; they arrive together, late.) Then, on clean links, a broker client without the fleet key cannot make it
-publish anything: junk, a message sealed with another key and a replayed real one are each
-dropped with a reason.
+then holds back every pose behind it for a second or two; they arrive together, late.)
+
+Then, on clean links, a broker client without the fleet key cannot make it publish anything:
+junk, a message sealed with another key and a replayed real one are each dropped with a
+reason.
 """
 import os
 import subprocess
@@ -86,6 +88,7 @@ def test_a_pose_crosses_a_lossy_slow_link_and_nothing_forged_is_published(tmp_pa
         # reaches the receiver well within max_age and is refused as a replay, not as stale
         for name in ('seer', 'seen'):
             hosts.shape(name, loss=0)
+
         def publish(payload):
             done = hosts.call('broker', ['mosquitto_pub', '-h', address, '-p', BROKER_PORT, '-t', BROKER_TOPIC,
                                          '-s'], input=payload, text=False)
