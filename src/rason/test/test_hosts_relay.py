@@ -17,7 +17,7 @@ import subprocess
 import sys
 
 from rason_hosts import Hosts
-from rason_hosts.case_study import BROKER_PORT, FLEET_CONF, tune_broker_host
+from rason_hosts.case_study import BROKER_PORT, FLEET_CONF
 from rason_hosts.hosts import read_line
 
 from hosts_agents import NEEDS_HOSTS_AND_WORKSPACE
@@ -59,7 +59,6 @@ def test_a_pose_crosses_a_lossy_slow_link_and_nothing_forged_is_published(tmp_pa
         subprocess.run(['rosrun', 'rason_bridge', 'fleet_key', path], check=True, stdout=subprocess.DEVNULL)
     with Hosts(['broker', 'seer', 'seen']) as hosts:
         address = hosts.address('broker')
-        tune_broker_host(hosts)
         broker = hosts.run_python('broker', 'rason_hosts.broker', ['--config', FLEET_CONF, '--listen', address,
                                                                    '--port', BROKER_PORT],
                                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=False)

@@ -42,15 +42,6 @@ FLEET_CONF = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..'
                           'mosquitto', 'fleet.conf')
 
 
-def tune_broker_host(hosts, name='broker'):
-    """What the multi-robot guide asks of a broker's host: retransmit thin streams (a pose a
-    robot relays, agent messages) at a steady timeout, not an exponential backoff (under the
-    loss-based congestion control every host of :class:`Hosts` has)."""
-    tuned = hosts.call(name, ['sysctl', '-qw', 'net.ipv4.tcp_thin_linear_timeouts=1'])
-    if tuned.returncode:
-        raise RuntimeError('cannot set the broker host\'s thin-stream timeouts: %s' % tuned.stderr.strip())
-
-
 class Transcript:
     """Every line the scenario's processes print, (wall time, source, text), in arrival order,
     read by a thread per process so that no pipe fills; waits for a line matching a pattern."""
@@ -252,7 +243,6 @@ class CaseStudyOnHosts:
 
     def _start_broker(self):
         address = self.hosts.address('broker')
-        tune_broker_host(self.hosts)
         broker = self.hosts.run_python('broker', 'rason_hosts.broker', [
             '--config', FLEET_CONF, '--listen', address, '--port', BROKER_PORT],
             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=False)

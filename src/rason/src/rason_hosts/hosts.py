@@ -99,10 +99,13 @@ def cleanup(prefix=DEFAULT_PREFIX, all_runs=False):
     return removed
 
 
-#: A new namespace inherits this machine's congestion control (BBR here), under which Linux
-#: never retransmits a thin stream at a steady timeout. A Debian host has cubic, loss-based,
-#: which a namespace cannot choose unless it is allowed; reno is the loss-based one it can.
-HOST_CONGESTION_CONTROL = 'net.ipv4.tcp_congestion_control=reno'
+#: Every host as the multi-robot guide asks a fleet's computer to be on a lossy link: a few
+#: small messages in flight (a pose, an agent's message, a heartbeat) are retransmitted at a
+#: steady timeout, not after an exponential backoff. That needs a loss-based congestion
+#: control: a new namespace inherits this machine's, BBR, under which Linux never counts a
+#: stream as thin. A Debian host has cubic, which a namespace cannot choose unless the machine
+#: allows it; reno is the loss-based one it always can.
+HOST_TCP_SETTINGS = ('net.ipv4.tcp_congestion_control=reno', 'net.ipv4.tcp_thin_linear_timeouts=1')
 
 _pending = weakref.WeakKeyDictionary()   # proc -> bytes read from its stdout, not yet a line
 SKIPPED_SHOWN = 8                        # lines a failed read_line quotes, to show what came instead
@@ -265,7 +268,7 @@ class Hosts:
             _ip('ip', '-n', namespace, 'addr', 'add',
                 '%s/%d' % (self._addresses[name], prefix_len), 'dev', 'eth0')
             _ip('ip', '-n', namespace, 'link', 'set', 'eth0', 'up')
-            _ip('ip', 'netns', 'exec', namespace, 'sysctl', '-qw', HOST_CONGESTION_CONTROL)
+            _ip('ip', 'netns', 'exec', namespace, 'sysctl', '-qw', *HOST_TCP_SETTINGS)
 
     def close(self):
         """Stop every process started here, then delete every namespace. Idempotent."""
