@@ -40,6 +40,11 @@ def refusal(launch, *args):
     ('sim_world.launch', 'robots:=rover rover', "'robots:=rover rover: one or more distinct"),
     ('sim_world.launch', 'socket_dir:=links', "'socket_dir:=links: an absolute path, or default'"),
     ('sim_link.launch', 'socket:=rover.sock', "'socket:=rover.sock: an absolute path, or default'"),
+    ('fleet_case_study.launch', 'helpers:=auction', "'helpers:=auction is not known: contract_net or broadcast'"),
+    ('fleet_case_study.launch', 'helpers:=broadcast', "'helpers:=broadcast needs recovery:=true'"),
+    ('fleet_case_study.launch', 'poses:=r9:1,1,1', "'poses:=r9:1,1,1: robot:x,y,yaw entries (numbers)"),
+    ('fleet_case_study.launch', 'poses:=r1:1,x,1', "'poses:=r1:1,x,1: robot:x,y,yaw entries (numbers)"),
+    ('fleet_case_study.launch', 'poses:=r1:1,1', "'poses:=r1:1,1: robot:x,y,yaw entries (numbers)"),
 ])
 def test_a_bad_value_stops_the_launch_naming_the_valid_ones(launch, arg, says):
     args = [arg] + {'robot.launch': ['ns:=r1'], 'sim_link.launch': ['robot:=rover']}.get(launch, [])
@@ -172,3 +177,20 @@ def test_the_turtlebot2_profile_wires_kobuki_node_s_and_the_openni_camera_s_name
     assert decomposer['/tb/cmd_vel'] == '/tb/mobile_base/commands/velocity'
     assert decomposer['/tb/odom'] == '/tb/odom'
     assert "'profile:=kobuki is not known: sim or turtlebot2'" in refusal('robot.launch', 'ns:=tb', 'profile:=kobuki')
+
+
+def test_fleet_start_poses_override_the_world_file_s_and_a_run_ends_and_records_when_asked():
+    path = os.path.join(PACKAGE, 'launch', 'fleet_case_study.launch')
+    config = roslaunch.config.load_config_default(
+        [(path, ['recovery:=true', 'helpers:=broadcast', 'poses:=r1:2.2,-0.1,3.0 r4:-1.5,1.5,-0.8',
+                 'end_when_done:=true', 'record:=true', 'bag:=/tmp/run.bag'])], None, verbose=False)
+    params = {k: p.value for k, p in config.params.items()}
+    assert (params['/rason_sim/r1/x'], params['/rason_sim/r1/y'], params['/rason_sim/r1/yaw']) == (2.2, -0.1, 3.0)
+    assert params['/rason_sim/r2/x'] == 1.768              # fleet.yaml's, not overridden
+    assert params['/rason_sim/r1/markers/left'] == 'red'   # the rest of r1 stays
+    assert params['/missions_done/agents'] == 'r1_robot r2_robot r3_robot r4_robot'
+    nodes = {n.name: n for n in config.nodes}
+    assert nodes['missions_done'].required
+    assert '/r4/true_pose' in nodes['recorder'].args and '/rason/messages' in nodes['recorder'].args
+    mas = {n.args for n in config.nodes if n.name == 'rason_mas'}
+    assert len(mas) == 1 and mas.pop().endswith('/agents/fleet/fleet_robot_mission_broadcast.mas2j')

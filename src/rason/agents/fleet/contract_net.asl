@@ -26,6 +26,15 @@ callerGrace(15000).     // ms a contractor stays committed to a caller out of re
 
 answeredAll(Id, N) :- .count(propose(Id, _), P) & .count(refuse(Id), R) & P + R >= N.
 
+// A program that believes firstAnswerWins (fleet_robot_mission_broadcast.mas2j) chooses as
+// the thesis's broadcast did: the first robot to offer, whatever its bid, and nobody else; when
+// it does not do, the caller calls again. The fleet campaign compares the two in the same runs.
+bidsAwaited(Id, N) :- firstAnswerWins & (propose(Id, _) | answeredAll(Id, N)).
+bidsAwaited(Id, N) :- not firstAnswerWins & answeredAll(Id, N).
+ranked([First | _], [First]) :- firstAnswerWins.
+ranked([], []) :- firstAnswerWins.
+ranked(Offers, Ranked) :- not firstAnswerWins & .sort(Offers, Ranked).
+
 /* The caller */
 
 +!contract(Service, Task)
@@ -41,12 +50,12 @@ answeredAll(Id, N) :- .count(propose(Id, _), P) & .count(refuse(Id), R) & P + R 
    +collecting(Id);
    .send(Candidates, achieve, callForBids(Id, Task));
    .length(Candidates, N);
-   .wait(answeredAll(Id, N), W, _);
+   .wait(bidsAwaited(Id, N), W, _);
    -collecting(Id);
    .findall(offer(Bid, P), propose(Id, Bid)[source(P)], Offers);
    .abolish(propose(Id, _));
    .abolish(refuse(Id));
-   .sort(Offers, Ranked);
+   ?ranked(Offers, Ranked);
    .print("contract ", Id, " for ", Task, ": bids ", Ranked, " from ", N, " called");
    +contract(Id, Task, Ranked);
    !awardNext(Id).

@@ -12,6 +12,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.function.BooleanSupplier;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -161,6 +163,23 @@ class FleetCaseStudyTest {
         await("c to be released", 10_000, () -> !watches("c", "f") && !believes(agents.arch("c"), "helping(_)"));
         RunningAgents.noInputFor(1500, "the pair's Faulty stops the MAS 1 s after its diagnosis");
         assertFalse(world.stopAsked(), "no robot stopped the MAS: the others may still need it");
+    }
+
+    @Test
+    void withFirstAnswerWinsTheFirstRobotToOfferIsAwardedAloneAndTheDiagnosisIsStillRight() throws Exception {
+        // the thesis's broadcast, for the fleet campaign's comparison: no ranking by bid
+        start(1, false, "firstAnswerWins.\n", new Robot("f", 0, 0, 0, false, "right_actuator"),
+                new Robot("a", 0, 2, -75, true, "none"),     // both see f: either may be first
+                new Robot("c", 2, 0, 190, true, "none"));
+        diagnosed("f", "right_actuator");
+        Matcher call = Pattern.compile("contract contract\\(f,1\\) for help\\(f,\\w+\\): bids (\\[[^\\]]*\\]) from 2 called")
+                .matcher(world.transcript());
+        assertTrue(call.find(), "f called both camera robots:\n" + world.transcript());
+        Matcher offers = Pattern.compile("offer\\([^,]+,(\\w+)\\)").matcher(call.group(1));
+        assertTrue(offers.find(), "an offer in " + call.group(1));
+        String first = offers.group(1);
+        assertFalse(offers.find(), "only the first offer is kept: " + call.group(1));
+        assertEquals(first, helper("f"), "the diagnosis used the feedback of the robot that offered first");
     }
 
     @Test
