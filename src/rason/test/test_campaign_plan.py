@@ -4,7 +4,7 @@ import re
 
 import pytest
 
-from rason_campaign import cli, plan, poses
+from rason_campaign import cli, fleet_plan, plan, poses
 
 
 def test_same_options_same_plan():
@@ -207,14 +207,15 @@ def _declared_args(launch):
 @pytest.mark.parametrize('make', [
     lambda **kw: plan.make_plan(plan.FAULTS, 1, 1, **kw),
     lambda **kw: plan.make_plan(plan.FAULTS, 1, 1, varied=True, **kw),
-    lambda **kw: plan.make_mission_plan(plan.FAULTS, 1, 1, fault_at=2.0, **kw)])
+    lambda **kw: plan.make_mission_plan(plan.FAULTS, 1, 1, fault_at=2.0, **kw),
+    lambda **kw: fleet_plan.make_fleet_plan((4, 6), 2, 1)])
 @pytest.mark.parametrize('interaction', sorted(plan.INTERACTIONS))
 def test_every_argument_a_run_passes_is_one_its_launch_file_declares(make, interaction):
     # roslaunch stops at an argument its file does not declare
     for spec in make(interaction=interaction, third_marker=True, images=True):
         launch = spec.launch[-1]
         declared = _declared_args(launch)
-        extra = set(dict(spec.args, record='true', bag='b')) - set(declared)
+        extra = {a.split(':=')[0] for a in plan.launch_arguments(spec, 'b')} - set(declared)
         assert not extra, '%s does not declare %s' % (launch, sorted(extra))
 
 

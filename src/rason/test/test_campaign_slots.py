@@ -131,3 +131,28 @@ def test_campaign_refuses_fewer_than_one_job(capsys):
     with pytest.raises(SystemExit):
         cli.parse_args(['--out', 'o', '--jobs', '0'])
     assert '--jobs' in capsys.readouterr().err
+
+
+def test_resume_makes_only_the_runs_without_a_record(tmp_path, capsys):
+    from rason_campaign import cli, runner
+    bags = tmp_path / 'bags'
+    bags.mkdir()
+    runner.RunRecord(0, 12.0, False, 'b.bag', 'b.log').save(str(bags / 'b.run.json'))
+
+    class Spec(object):
+        def __init__(self, name):
+            self.name = name
+
+        def __str__(self):
+            return self.name
+
+    class Runner(FakeRunner):
+        RunRecord = runner.RunRecord
+
+    args = cli.parse_args(['--out', str(tmp_path), '--resume'])
+    fake = Runner()
+    results = cli.run_all(args, [Spec('a'), Spec('b')], str(bags), fake,
+                          lambda index, spec: '', lambda spec, record: (spec.name, record), lambda r: '')
+    assert results[0] == ('a', 'record of a')      # made
+    assert results[1][0] == 'b' and results[1][1].to_dict() == runner.RunRecord(0, 12.0, False, 'b.bag', 'b.log').to_dict()
+    assert len(fake.ports) == 1                     # b was not made again

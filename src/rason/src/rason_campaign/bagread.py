@@ -24,10 +24,11 @@ def planar(pose):
     return p.x, p.y, math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
 
 
-def read_events(path, poses=False):
+def read_events(path, poses=False, robots=ROBOTS):
     """Events of the bag at ``path``, times in simulated seconds (via /clock): actions,
     messages, the ``rason/diagnosis`` ('diagnosis') and ``rason/mission`` ('mission')
-    statuses and, with ``poses``, the simulator's true poses ('pose': robot, x, y, yaw).
+    statuses and, with ``poses``, the simulator's true poses ('pose': robot, x, y, yaw), of
+    ``robots`` (the pair's by default).
 
     :rtype: list of (t, kind, fields)
     :raises BagError: when the bag is missing or unreadable.
@@ -36,8 +37,8 @@ def read_events(path, poses=False):
     from rason_campaign.steps import clock_mapper
     if not os.path.exists(path):
         raise BagError('no bag %s' % path)
-    action_topics = {ACTION_TOPIC % r: r for r in ROBOTS}
-    pose_topics = {TRUE_POSE_TOPIC % r: r for r in ROBOTS} if poses else {}
+    action_topics = {ACTION_TOPIC % r: r for r in robots}
+    pose_topics = {TRUE_POSE_TOPIC % r: r for r in robots} if poses else {}
     topics = list(action_topics) + list(pose_topics) + [MESSAGES_TOPIC, DIAGNOSTICS_TOPIC,
                                                         CLOCK_TOPIC]
     clock, raw = [], []

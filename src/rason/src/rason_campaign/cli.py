@@ -2,11 +2,13 @@
 
     rosrun rason campaign --faults all --runs 5 --seed 1 --out results/campaign
     rosrun rason campaign --scenario fault_tolerance --runs 10 --out results/fault_tolerance
+    rosrun rason campaign --scenario fleet --sizes 4,6 --runs 25 --out results/fleet
 
 Writes into --out: plan.json, report.md, results.json and the PNG figures (the
 fault-tolerance scenario also summary.csv and runs.csv); the bags, the launch logs and each
 run's record go to --bags (default: <out>/bags). --analyze-only makes the report again from
-what --out and --bags hold.
+what --out and --bags hold; --resume goes on with the plan in --out, making only the runs
+that have no record yet.
 """
 import argparse
 import datetime
@@ -16,31 +18,38 @@ import shlex
 import sys
 import time
 
-from rason_campaign import (figures, mission, mission_figures, mission_report, plan, report,
-                            slots, stats, steps)
+from rason_campaign import (figures, fleet_plan, fleet_runs, mission, mission_figures,
+                            mission_report, plan, report, slots, stats, steps)
 
 PLAN_FILE = 'plan.json'
 PORTS_PER_SLOT = 100  # master ports each run slot (--jobs) picks from
 # Wall seconds before a run is stopped, per scenario: a recovery (a delegated mission above
 # all) takes longer than the diagnosis alone.
-TIMEOUTS = {'diagnosis': 240.0, 'fault_tolerance': 420.0}
+TIMEOUTS = {'diagnosis': 240.0, 'fault_tolerance': 420.0, 'fleet': 600.0}
+# The simulator's real-time factor per scenario: a fleet runs as fast as its lockstep lets it.
+RATES = {'diagnosis': 1.0, 'fault_tolerance': 1.0, 'fleet': 0.0}
 
 
 def parse_args(argv):
     p = argparse.ArgumentParser(prog='campaign', description=__doc__.split('\n\n')[0])
     p.add_argument('--scenario', default='diagnosis', choices=plan.SCENARIOS,
-                   help='diagnosis (the thesis\'s case study, default) or fault_tolerance '
-                   '(each run with recovery and as the thesis\'s baseline)')
+                   help='diagnosis (the thesis\'s case study, default), fault_tolerance '
+                   '(each run with recovery and as the thesis\'s baseline) or fleet (N robots '
+                   'running one program, helpers by contract net and by broadcast)')
+    p.add_argument('--sizes', default='4,6',
+                   help='fleet: the fleet sizes, robots r1 ... rN of fleet.yaml (default 4,6)')
     p.add_argument('--fault-at', type=float, default=0.0,
                    help='fault_tolerance: inject the fault this many seconds after Faulty '
                    'first moves (default 0: at the start)')
     p.add_argument('--faults', default='all', help='all, or a comma list of %s' %
                    ', '.join(plan.FAULTS))
-    p.add_argument('--runs', type=int, default=5, help='runs per fault (default 5)')
+    p.add_argument('--runs', type=int, default=5,
+                   help='runs per fault (fleet: per size, each in both arms; default 5)')
     p.add_argument('--seed', type=int, default=1, help='campaign seed (default 1)')
     p.add_argument('--out', required=True, help='directory of the report')
     p.add_argument('--bags', help='directory of the bags and logs (default: OUT/bags)')
-    p.add_argument('--rate', type=float, default=1.0, help='simulator real-time factor')
+    p.add_argument('--rate', type=float,
+                   help='simulator real-time factor (default 1; fleet: 0, as fast as the lockstep lets it)')
     p.add_argument('--interaction', default='none', choices=sorted(plan.INTERACTIONS),
                    help='interaction fault of thesis §7.5-7.6 (default none)')
     p.add_argument('--no-jitter', action='store_true',
@@ -64,9 +73,21 @@ def parse_args(argv):
     p.add_argument('--images', action='store_true', help='bags also hold the camera images')
     p.add_argument('--analyze-only', action='store_true',
                    help='no runs: report again from the bags in --bags')
+    p.add_argument('--resume', action='store_true',
+                   help='go on with the plan in --out: runs with a record in --bags are not made again')
     args = p.parse_args(argv)
     if args.timeout is None:
         args.timeout = TIMEOUTS[args.scenario]
+    if args.rate is None:
+        args.rate = RATES[args.scenario]
+    if args.scenario == 'fleet':
+        drawn = [name for name, given in (('--faults', args.faults != 'all'),
+                                          ('--interaction', args.interaction != 'none'),
+                                          ('--no-jitter', args.no_jitter), ('--images', args.images),
+                                          ('--third-marker', args.third_marker)) if given]
+        if drawn:
+            p.error('%s: not for --scenario fleet (its faults and poses are drawn per run)'
+                    % ', '.join(drawn))
     if args.jobs < 1:
         p.error('--jobs must be at least 1')
     if args.fault_at and args.scenario != 'fault_tolerance':
@@ -179,14 +200,19 @@ def main(argv=None):
     args = parse_args(sys.argv[1:] if argv is None else argv)
     bags = output_dirs(args.out, args.bags)
     plan_path = os.path.join(args.out, PLAN_FILE)
-    if args.analyze_only:
+    if args.analyze_only or args.resume:
+        if not os.path.exists(plan_path):
+            sys.exit('campaign: no %s to go on with' % plan_path)
         with open(plan_path) as f:
             saved = json.load(f)
         meta, specs = saved['meta'], [plan.RunSpec.from_dict(d) for d in saved['runs']]
     else:
         try:
             faults = plan.parse_faults(args.faults)
-            if args.scenario == 'fault_tolerance':
+            if args.scenario == 'fleet':
+                specs = fleet_plan.make_fleet_plan(fleet_plan.parse_sizes(args.sizes),
+                                                   args.runs, args.seed, args.rate)
+            elif args.scenario == 'fault_tolerance':
                 specs = plan.make_mission_plan(faults, args.runs, args.seed, args.fault_at,
                                                args.interaction, args.rate, args.images,
                                                args.third_marker)
@@ -208,9 +234,14 @@ def main(argv=None):
         if args.scenario != 'diagnosis':  # a diagnosis plan.json stays what it was
             del meta['jitter']            # the poses are spread by poses.spread_poses
             meta.update({'scenario': args.scenario, 'fault_at': args.fault_at})
+        if args.scenario == 'fleet':
+            meta['sizes'] = args.sizes
+            del meta['interaction'], meta['fault_at']
         _write_plan(plan_path, meta, specs)
     if meta.get('scenario', 'diagnosis') == 'fault_tolerance':
         sys.exit(run_missions(args, meta, specs, bags, runner, bagread))
+    if meta.get('scenario') == 'fleet':
+        sys.exit(fleet_runs.run_fleet(args, meta, specs, bags, runner, bagread, run_all))
     t0 = time.monotonic()
     results = run_all(args, specs, bags, runner,
                       lambda _index, spec: progress_start(spec, len(specs)),
@@ -243,9 +274,9 @@ def run_all(args, specs, bags, runner, start_line, analyze_run, end_line):
     :param end_line: result -> the text that ends the line"""
     def run_one(numbered, slot):
         _index, spec = numbered
-        if args.analyze_only:
-            path = os.path.join(bags, spec.name + '.run.json')
-            record = runner.RunRecord.load(path) if os.path.exists(path) else None
+        kept = os.path.join(bags, spec.name + '.run.json') if args.analyze_only or args.resume else None
+        if args.analyze_only or (kept and os.path.exists(kept)):  # --resume: made before
+            record = runner.RunRecord.load(kept) if os.path.exists(kept) else None
         else:
             record = runner.run(spec, bags, args.timeout, args.port + PORTS_PER_SLOT * slot)
         return analyze_run(spec, record)

@@ -63,11 +63,13 @@ BOX_IN_FRONT = 0.5
 MARKER_SEPARATION = 0.227   # rason_sim's kMarkerSeparation: between the side cylinders' axes
 
 
-SCENARIOS = ('diagnosis', 'fault_tolerance')
+SCENARIOS = ('diagnosis', 'fault_tolerance', 'fleet')  # fleet: rason_campaign.fleet_plan
 # Arm of a fault-tolerance run -> the launch file it runs; a diagnosis run has no arm.
 ARMS = ('recovery', 'baseline')
 LAUNCHES = {None: 'faulty_helper.launch', 'recovery': 'fault_tolerance.launch',
-            'baseline': 'faulty_helper.launch'}
+            'baseline': 'faulty_helper.launch',
+            # the fleet campaign's arms (rason_campaign.fleet_plan): how helpers are chosen
+            'contract_net': 'fleet_case_study.launch', 'broadcast': 'fleet_case_study.launch'}
 
 
 class PlanError(ValueError):
@@ -279,6 +281,8 @@ def launch_arguments(spec, bag):
 
     :rtype: list of str
     """
-    # no dialogue node: the bag holds the messages it would print (saves ~0.4 s CPU a run)
-    args = dict(spec.args, record='true', bag=bag, dialogue='false')
+    args = dict(spec.args, record='true', bag=bag)
+    if spec.launch[1] != 'fleet_case_study.launch':  # the fleet's has no dialogue node
+        # no dialogue node: the bag holds the messages it would print (saves ~0.4 s CPU a run)
+        args['dialogue'] = 'false'
     return ['%s:=%s' % (k, args[k]) for k in sorted(args)]
