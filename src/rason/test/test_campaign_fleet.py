@@ -268,3 +268,34 @@ def test_missions_done_waits_for_every_agent_s_mission_status():
 def test_missions_done_needs_agents():
     with pytest.raises(ValueError):
         MissionsAwaited([])
+
+
+def test_a_campaign_stopped_part_way_reports_the_runs_made_and_resume_keeps_them(tmp_path):
+    rs = results()
+    never = dict(rs[0], number=9, seed=1009, wall=None, exit_code=None, timed_out=None)
+    (tmp_path / 'results.json').write_text(json.dumps({'runs': rs + [never]}))
+    reported = cli.reported_runs(str(tmp_path))
+    assert sorted(reported) == sorted(plan.RunSpec.from_dict(r).name for r in rs)  # not the unmade one
+    fleet_runs.write_report(str(tmp_path), {'planned': 8}, rs)
+    assert "Made so far: 4 of the plan's 8 runs" in (tmp_path / 'report.md').read_text()
+
+
+def test_resume_reuses_a_reported_run_whose_bag_is_gone(tmp_path):
+    rs = results()
+    (tmp_path / 'results.json').write_text(json.dumps({'runs': rs}))
+    specs = fleet_plan.make_fleet_plan((4,), 3, 1)    # runs 1 and 2 reported, 3 not
+    made = []
+
+    class Runner(object):
+        def run(self, spec, bags, timeout, port):
+            made.append(spec.name)
+            return 'record'
+
+        def stop_all(self):
+            pass
+
+    args = cli.parse_args(['--scenario', 'fleet', '--resume', '--out', str(tmp_path)])
+    out = cli.run_all(args, specs, str(tmp_path / 'bags'), Runner(), lambda i, s: '',
+                      lambda spec, record: {'made': spec.name}, lambda r: '')
+    assert made == [s.name for s in specs[4:]]
+    assert out[:4] == rs and out[4:] == [{'made': s.name} for s in specs[4:]]

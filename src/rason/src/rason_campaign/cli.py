@@ -8,7 +8,7 @@ Writes into --out: plan.json, report.md, results.json and the PNG figures (the
 fault-tolerance scenario also summary.csv and runs.csv); the bags, the launch logs and each
 run's record go to --bags (default: <out>/bags). --analyze-only makes the report again from
 what --out and --bags hold; --resume goes on with the plan in --out, making only the runs
-that have no record yet.
+that have neither a record in --bags nor a result in --out's results.json.
 """
 import argparse
 import datetime
@@ -74,7 +74,8 @@ def parse_args(argv):
     p.add_argument('--analyze-only', action='store_true',
                    help='no runs: report again from the bags in --bags')
     p.add_argument('--resume', action='store_true',
-                   help='go on with the plan in --out: runs with a record in --bags are not made again')
+                   help='go on with the plan in --out: runs with a record in --bags or a result in '
+                   'OUT/results.json are not made again')
     args = p.parse_args(argv)
     if args.timeout is None:
         args.timeout = TIMEOUTS[args.scenario]
@@ -272,11 +273,15 @@ def run_all(args, specs, bags, runner, start_line, analyze_run, end_line):
     :param start_line: (index from 1, spec) -> the text printed before the run
     :param analyze_run: (spec, record or None) -> the run's result
     :param end_line: result -> the text that ends the line"""
+    reported = reported_runs(args.out) if args.resume else {}
+
     def run_one(numbered, slot):
         _index, spec = numbered
         kept = os.path.join(bags, spec.name + '.run.json') if args.analyze_only or args.resume else None
         if args.analyze_only or (kept and os.path.exists(kept)):  # --resume: made before
             record = runner.RunRecord.load(kept) if os.path.exists(kept) else None
+        elif reported and spec.name in reported:  # --resume: reported, its bag elsewhere
+            return reported[spec.name]
         else:
             record = runner.run(spec, bags, args.timeout, args.port + PORTS_PER_SLOT * slot)
         return analyze_run(spec, record)
@@ -287,6 +292,18 @@ def run_all(args, specs, bags, runner, start_line, analyze_run, end_line):
     jobs = 1 if args.analyze_only else args.jobs
     return slots.run_in_slots(list(enumerate(specs, 1)), jobs, run_one, print_line,
                               runner.stop_all)
+
+
+def reported_runs(out):
+    """{run name: result} of the runs that --out's results.json reports as made (a wall time
+    recorded), so that --resume goes on without their bags, e.g. on another machine."""
+    path = os.path.join(out, 'results.json')
+    if not os.path.exists(path):
+        return {}
+    with open(path) as f:
+        runs = json.load(f).get('runs', [])
+    return {plan.RunSpec.from_dict(r).name: r for r in runs
+            if isinstance(r, dict) and r.get('wall') is not None}
 
 
 def run_missions(args, meta, specs, bags, runner, bagread):

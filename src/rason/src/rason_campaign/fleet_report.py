@@ -143,6 +143,9 @@ def markdown(meta, results, figures):
            'for a robot free to watch: one whose own mission ended); award to diagnosis: from '
            'the award of the help, which is what the choice of watcher decides.', '',
            summary_table(rows), '']
+    if meta.get('planned', len(results)) > len(results):
+        out[4:4] = ['**Made so far: %d of the plan\'s %d runs** (go on with `--resume`).'
+                    % (len(results), meta['planned']), '']
     if pairs:
         out += ['Paired by run and faulty robot (%d pairs): contract net diagnosed sooner in %d; '
                 'broadcast minus contract net, median %s s, p10 %s s, p90 %s s.' % (

@@ -50,7 +50,8 @@ def write_report(out, meta, results):
 
 
 def run_fleet(args, meta, specs, bags, runner, bagread, run_all):
-    """The fleet campaign's runs (or, with --analyze-only, their bags) and report.
+    """The fleet campaign's runs (or, with --analyze-only, their bags) and the report of the
+    runs made (of a campaign stopped part-way, the report says how many of the plan's).
 
     :returns: the exit status: 1 when a run was diagnosed wrongly, else 0"""
     t0 = time.monotonic()
@@ -58,7 +59,8 @@ def run_fleet(args, meta, specs, bags, runner, bagread, run_all):
                       lambda index, spec: progress_start(index, spec, len(specs)),
                       lambda spec, record: analyze(spec, record, bagread.read_events),
                       progress_end)
-    write_report(args.out, meta, results)
+    made = [r for r in results if r['wall'] is not None]  # a campaign stopped part-way
+    write_report(args.out, dict(meta, planned=len(specs)), made)
     wrong = sum(r['wrong'] for r in results)
     completed = sum(bool(r['completed']) for r in results)
     met = all(m for _, m, _ in fleet_report.goals(results))
