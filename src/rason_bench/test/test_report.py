@@ -79,12 +79,15 @@ def test_cpu_slowdown_counts_the_share_of_the_cores_the_node_got():
     assert report.cpu_slowdown(c) == 0.75   # slower only because it got half a core
 
 
-def _cpu(us, quiet=500.0):
+def _cpu(us, quiet=500.0, silent=None):
     def row(u):
         return {'literals_per_message': 10, 'rate_hz': 50, 'window_s': 3, 'idle_cpu_percent': 2.0,
                 'cpu_percent': 30.0, 'us_per_message': u,
                 'runs': [{'cpu_s': 1.0, 'wall_s': 3.0, 'messages': 150, 'us_per_message': u}]}
-    return {'listing_5_4': row(us), 'no_plans': row(quiet)}
+    out = {'listing_5_4': row(us), 'no_plans': row(quiet)}
+    if silent is not None:
+        out['no_print'] = row(silent)
+    return out
 
 
 def _reaction(p50, p99, seen=50, sent=50):
@@ -119,6 +122,16 @@ def test_new_measurements_each_have_a_goal():
     assert len(verdicts) == 4 + 1 + 2 + 1 + 1 + 5
     assert all(met for _, _, met in verdicts)
     assert _goal(results, 'node CPU per perception message') == ('800 µs (without perception plans: 500 µs)', True)
+
+
+def test_a_printed_line_costs_the_listing_agent_s_cpu_less_the_same_plans_without_print_per_literal():
+    results = dict(_results(), cpu=_cpu(1800.0, quiet=900.0, silent=1000.0))
+    measured, met = _goal(results, 'node CPU per line an agent prints')
+    assert measured.startswith('80 µs') and met                   # (1800 - 1000) / 10
+    results['cpu'] = _cpu(2300.0, quiet=900.0, silent=1000.0)
+    assert _goal(results, 'node CPU per line an agent prints') == (
+        "130 µs (Listing 5.4's agent 2300 µs a message, the same plans without .print 1000 µs, 10 lines a message)", False)
+    assert 'the same plans without `.print`' in report.cpu_table(results['cpu'])
 
 
 def test_cpu_goal_is_on_the_listing_agent():

@@ -183,11 +183,12 @@ CPU_WARM_S = 30.0
 def node_cpu_per_message(procs, harness, window, log, count=10, rate=50, windows=3, warm=CPU_WARM_S):
     """CPU time (user + sys) of the rason_mas process per perception message of a ``count``
     literals x ``rate`` Hz burst, less its idle CPU use: the median of ``windows`` windows of
-    ``window`` s, for the Listing 5.4 agent (a plan with a .print per literal) and for an
+    ``window`` s, for the Listing 5.4 agent (a plan with a .print per literal), for the same
+    plans without the .print (what the printed lines cost is the difference) and for an
     agent without perception plans (the bridge and the belief updates only). The messages are
     those the harness heard from the burst meanwhile (the node subscribes to the same topic)."""
     out = {}
-    for label, mas2j in (('listing_5_4', 'bench.mas2j'), ('no_plans', 'quiet.mas2j')):
+    for label, mas2j in (('listing_5_4', 'bench.mas2j'), ('no_print', 'silent.mas2j'), ('no_plans', 'quiet.mas2j')):
         with Mas(procs, harness, mas2j) as mas:
             with Burst(procs, harness, count, rate):  # the JIT compiles the perception path (CPU_WARM_S)
                 time.sleep(warm)
