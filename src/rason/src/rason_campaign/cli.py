@@ -36,8 +36,8 @@ def parse_args(argv):
                    help='diagnosis (the thesis\'s case study, default), fault_tolerance '
                    '(each run with recovery and as the thesis\'s baseline) or fleet (N robots '
                    'running one program, helpers by contract net and by broadcast)')
-    p.add_argument('--sizes', default='4,6',
-                   help='fleet: the fleet sizes, robots r1 ... rN of fleet.yaml (default 4,6)')
+    p.add_argument('--sizes', default=','.join(map(str, fleet_plan.SIZES)),
+                   help='fleet: the fleet sizes, robots r1 ... rN of fleet.yaml (default %(default)s)')
     p.add_argument('--fault-at', type=float, default=0.0,
                    help='fault_tolerance: inject the fault this many seconds after Faulty '
                    'first moves (default 0: at the start)')

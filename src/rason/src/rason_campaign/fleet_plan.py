@@ -67,7 +67,7 @@ def fleet_faults(seed, robots, index):
 
 def poses_argument(poses):
     """fleet_case_study.launch's ``poses`` argument: ``r1:x,y,yaw r2:...``."""
-    return ' '.join('%s:%s' % (robot, ','.join(repr(v) for v in pose))
+    return ' '.join('%s:%s' % (robot, ','.join('%.*f' % (DIGITS, v) for v in pose))
                     for robot, pose in sorted(poses.items()))
 
 
