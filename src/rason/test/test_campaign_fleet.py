@@ -232,6 +232,18 @@ def test_summary_paired_times_and_goals():
     assert goals['0 wrong diagnoses'] and not goals['at least 100 runs, N = 4 and 6']
 
 
+def test_by_fault_and_the_robots_the_arms_chose_differently():
+    rs = results()
+    rows = fleet_report.by_fault(rs)
+    assert [r['fault'] for r in rows] == ['left_actuator']
+    assert rows[0]['contract_net'] == {'robots': 2, 'completed': 2, 'call_median': 12.5, 'award_median': 11.5}
+    assert rows[0]['broadcast']['call_median'] == 15.5
+    assert fleet_report.other_watcher(rs) == []
+    rs[1]['robots'][3]['helpers'] = ['r3']          # run 1's broadcast arm chose r3 first
+    assert fleet_report.other_watcher(rs) == [(1, 'r4')]
+    assert 'a different first watcher for 1 of these 2' in fleet_report.markdown({}, rs, [])
+
+
 def test_report_files(tmp_path):
     rs = results()
     fleet_runs.write_report(str(tmp_path), {'command': 'campaign --scenario fleet', 'runs': 2}, rs)

@@ -61,19 +61,58 @@ def summary(results):
     return rows
 
 
-def paired(results):
-    """Per run (number), each faulty robot's time to diagnosis in both arms:
-    [(number, robot, contract net s, broadcast s)] where both were diagnosed."""
+def _both_arms(results):
+    """{(run number, faulty robot): {arm: that robot's result}} where both arms were made."""
     by_run = {}
     for r in results:
         for f in faulty_robots(r):
-            by_run.setdefault((r['number'], f['robot']), {})[r['arm']] = f['time_to_diagnosis']
+            by_run.setdefault((r['number'], f['robot']), {})[r['arm']] = f
+    return {k: v for k, v in sorted(by_run.items()) if len(v) == len(FLEET_ARMS)}
+
+
+def paired(results, since='time_to_diagnosis'):
+    """Per run (number), each faulty robot's time to diagnosis in both arms:
+    [(number, robot, contract net s, broadcast s)] where both were diagnosed."""
     pairs = []
-    for (number, robot), times in sorted(by_run.items()):
-        cn, bc = times.get('contract_net'), times.get('broadcast')
+    for (number, robot), arms in _both_arms(results).items():
+        cn, bc = arms['contract_net'][since], arms['broadcast'][since]
         if cn is not None and bc is not None:
             pairs.append((number, robot, cn, bc))
     return pairs
+
+
+def other_watcher(results):
+    """The (run number, faulty robot) whose first watcher the two arms chose differently."""
+    return [k for k, arms in _both_arms(results).items()
+            if arms['contract_net']['helpers'][:1] != arms['broadcast']['helpers'][:1]]
+
+
+def by_fault(results):
+    """A row per fault of the faulty robots: in each arm their count, missions completed and
+    the medians of both times to diagnosis."""
+    rows = []
+    faults = sorted({f['fault'] for r in results for f in faulty_robots(r)})
+    for fault in faults:
+        row = {'fault': fault}
+        for arm in FLEET_ARMS:
+            robots = [f for r in results if r['arm'] == arm for f in faulty_robots(r) if f['fault'] == fault]
+            row[arm] = {'robots': len(robots),
+                        'completed': sum(f['mission']['completed'] for f in robots),
+                        'call_median': stats.median([f['time_to_diagnosis'] for f in robots]),
+                        'award_median': stats.median([f['award_to_diagnosis'] for f in robots])}
+        rows.append(row)
+    return rows
+
+
+def by_fault_table(rows):
+    lines = ['| fault | faulty robots (contract net / broadcast) | their missions completed | call to '
+             'diagnosis, median (s) | award to diagnosis, median (s) |', '|---|---|---|---|---|']
+    for row in rows:
+        cn, bc = row['contract_net'], row['broadcast']
+        lines.append('| %s | %d / %d | %d / %d | %s / %s | %s / %s |' % (
+            row['fault'], cn['robots'], bc['robots'], cn['completed'], bc['completed'],
+            _s(cn['call_median']), _s(bc['call_median']), _s(cn['award_median']), _s(bc['award_median'])))
+    return '\n'.join(lines)
 
 
 def goals(results):
@@ -147,11 +186,21 @@ def markdown(meta, results, figures):
         out[4:4] = ['**Made so far: %d of the plan\'s %d runs** (go on with `--resume`).'
                     % (len(results), meta['planned']), '']
     if pairs:
+        chosen = other_watcher(results)
+        apart = [(cn, bc) for number, robot, cn, bc in paired(results, 'award_to_diagnosis')
+                 if (number, robot) in chosen]
         out += ['Paired by run and faulty robot (%d pairs): contract net diagnosed sooner in %d; '
                 'broadcast minus contract net, median %s s, p10 %s s, p90 %s s.' % (
                     len(pairs), faster, _s(stats.median(differences)),
                     _s(stats.percentile(differences, 10)), _s(stats.percentile(differences, 90))),
-                '']
+                '',
+                'The arms chose a different first watcher for %d of these %d faulty robots (most calls '
+                'find one robot free to watch, whom both arms choose)%s.' % (
+                    len(chosen), len(pairs),
+                    '; for those, award to diagnosis median %s s by contract net, %s s by broadcast'
+                    % (_s(stats.median([cn for cn, _ in apart])), _s(stats.median([bc for _, bc in apart])))
+                    if apart else ''),
+                '', by_fault_table(by_fault(results)), '']
     out += ['| goal | met | measured |', '|---|---|---|']
     out += ['| %s | %s | %s |' % (text, 'yes' if met else 'no', measured)
             for text, met, measured in goals(results)]
