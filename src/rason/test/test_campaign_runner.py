@@ -91,3 +91,23 @@ def test_a_run_s_jvm_options_lead_and_the_shell_s_come_last():
     assert env['ROS_MASTER_URI'] == uri
     assert env['RASON_JVM_OPTIONS'].split() == runner.RUN_JVM_OPTIONS.split() + ['-XX:TieredStopAtLevel=4']
     assert runner.launch_env(uri, {})['RASON_JVM_OPTIONS'] == runner.RUN_JVM_OPTIONS
+
+
+def test_a_run_stopped_by_ctrl_c_raises_and_leaves_no_record(tmp_path):
+    # stop_all (the campaign's Ctrl-C) stops the launch under way: the run must not count as made
+    sleeper = [sys.executable, '-c', 'import time; time.sleep(60)']
+    log = str(tmp_path / 'run.log')
+    t0 = time.monotonic()
+    def ctrl_c_once_running(proc):
+        def press():
+            while proc not in runner._live:     # _launch lists it right after on_start
+                time.sleep(0.01)
+            runner.stop_all()
+        threading.Thread(target=press, daemon=True).start()
+
+    with pytest.raises(runner.RunInterrupted):
+        runner._launch(sleeper, 'http://127.0.0.1:1', log, 60.0, on_start=ctrl_c_once_running)
+    assert time.monotonic() - t0 < 30
+    # a run that ends by itself is unaffected
+    timed_out, code, _ = runner._launch([sys.executable, '-c', 'raise SystemExit(3)'], 'http://127.0.0.1:1', log, 60.0)
+    assert (timed_out, code) == (False, 3)

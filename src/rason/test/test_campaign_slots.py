@@ -156,3 +156,17 @@ def test_resume_makes_only_the_runs_without_a_record(tmp_path, capsys):
     assert results[0] == ('a', 'record of a')      # made
     assert results[1][0] == 'b' and results[1][1].to_dict() == runner.RunRecord(0, 12.0, False, 'b.bag', 'b.log').to_dict()
     assert len(fake.ports) == 1                     # b was not made again
+
+
+def test_sigterm_stops_a_campaign_as_ctrl_c_does():
+    import subprocess
+    import sys
+    code = ('import os, signal\n'
+            'from rason_campaign import cli\n'
+            'cli.stop_on_sigterm()\n'
+            'try:\n'
+            '    os.kill(os.getpid(), signal.SIGTERM)\n'
+            'except KeyboardInterrupt:\n'
+            '    print("interrupted")\n')
+    out = subprocess.run([sys.executable, '-c', code], capture_output=True, text=True, timeout=60)
+    assert out.stdout.split() == ['interrupted']

@@ -15,6 +15,7 @@ import datetime
 import json
 import os
 import shlex
+import signal
 import sys
 import time
 
@@ -199,6 +200,7 @@ def main(argv=None):
     scenario of --analyze-only is the one plan.json was made for."""
     from rason_campaign import bagread, runner  # ROS only here
     args = parse_args(sys.argv[1:] if argv is None else argv)
+    stop_on_sigterm()
     bags = output_dirs(args.out, args.bags)
     plan_path = os.path.join(args.out, PLAN_FILE)
     if args.analyze_only or args.resume:
@@ -258,6 +260,14 @@ def main(argv=None):
           % (s['counts']['correct'], s['counts']['undiagnosed'], s['counts']['wrong'],
              s['runs'], wall, os.path.join(args.out, 'report.md')))
     sys.exit(0 if s['counts']['wrong'] == 0 else 1)
+
+
+def stop_on_sigterm():
+    """``kill`` (SIGTERM) stops a campaign as Ctrl-C does, also one started in the background
+    (where SIGINT is ignored): the run under way is stopped and gets no record."""
+    def interrupt(_signum, _frame):
+        raise KeyboardInterrupt
+    signal.signal(signal.SIGTERM, interrupt)
 
 
 def _write_plan(path, meta, specs):

@@ -211,15 +211,23 @@ def _recover_bag(bag):
     os.rename(active, bag)
 
 
-# Launches under way (runs on several slots at once), so Ctrl-C can stop them all.
+class RunInterrupted(Exception):
+    """The run was stopped by :func:`stop_all` (Ctrl-C): it gets no record, so that
+    ``--resume`` makes it again rather than count a run cut short."""
+
+
+# Launches under way (runs on several slots at once), so Ctrl-C can stop them all, and those
+# stop_all stopped.
 _live = set()
+_interrupted = set()
 _live_lock = threading.Lock()
 
 
 def stop_all():
-    """Stops every launch under way (each ends its run as timed out would: bag closed)."""
+    """Stops every launch under way (bag closed); their runs raise RunInterrupted."""
     with _live_lock:
         procs = list(_live)
+        _interrupted.update(procs)
     for proc in procs:
         _stop(proc)
 
@@ -277,7 +285,9 @@ def run(spec, bag_dir, timeout, base_port=11611, env=None, on_start=None):
 
 def _launch(cmd, master_uri, log, timeout, env=None, on_start=None):
     """roslaunch ``cmd`` on ``master_uri`` until it ends or ``timeout`` wall seconds, output
-    appended to ``log``; (timed out, exit code, wall seconds)."""
+    appended to ``log``; (timed out, exit code, wall seconds).
+
+    :raises RunInterrupted: stop_all stopped it meanwhile"""
     timed_out = False
     t0 = time.monotonic()
     with open(log, 'a') as out:
@@ -301,4 +311,8 @@ def _launch(cmd, master_uri, log, timeout, env=None, on_start=None):
         finally:
             with _live_lock:
                 _live.discard(proc)
+                interrupted = proc in _interrupted
+                _interrupted.discard(proc)
+    if interrupted:
+        raise RunInterrupted('stopped after %.0f s' % (time.monotonic() - t0))
     return timed_out, proc.returncode, round(time.monotonic() - t0, 1)
