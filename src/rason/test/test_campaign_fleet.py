@@ -311,3 +311,14 @@ def test_resume_reuses_a_reported_run_whose_bag_is_gone(tmp_path):
                       lambda spec, record: {'made': spec.name}, lambda r: '')
     assert made == [s.name for s in specs[4:]]
     assert out[:4] == rs and out[4:] == [{'made': s.name} for s in specs[4:]]
+
+
+def test_the_campaign_s_last_line_counts_the_runs_made(tmp_path, capsys):
+    rs = results()
+    unmade = dict(rs[0], number=3, wall=None, completed=False, reason='the run was never made')
+    args = cli.parse_args(['--scenario', 'fleet', '--analyze-only', '--out', str(tmp_path)])
+    status = fleet_runs.run_fleet(args, {}, [None] * 5, 'bags', None, None,
+                                  lambda *a: rs + [unmade])
+    assert status == 0
+    assert 'campaign: 4 of 4 runs made (5 planned) completed, 0 wrong diagnoses' in capsys.readouterr().out
+    assert "Made so far: 4 of the plan's 5 runs" in (tmp_path / 'report.md').read_text()

@@ -61,10 +61,10 @@ def run_fleet(args, meta, specs, bags, runner, bagread, run_all):
                       progress_end)
     made = [r for r in results if r['wall'] is not None]  # a campaign stopped part-way
     write_report(args.out, dict(meta, planned=len(specs)), made)
-    wrong = sum(r['wrong'] for r in results)
-    completed = sum(bool(r['completed']) for r in results)
-    met = all(m for _, m, _ in fleet_report.goals(results))
-    print('campaign: %d of %d runs completed, %d wrong diagnoses, in %.0f s; goals %s; report %s'
-          % (completed, len(results), wrong, time.monotonic() - t0, 'met' if met else 'not met',
-             os.path.join(args.out, 'report.md')))
+    wrong = sum(r['wrong'] for r in made)
+    completed = sum(bool(r['completed']) for r in made)
+    met = all(m for _, m, _ in fleet_report.goals(made))
+    print('campaign: %d of %d runs made (%d planned) completed, %d wrong diagnoses, in %.0f s; '
+          'goals %s; report %s' % (completed, len(made), len(specs), wrong, time.monotonic() - t0,
+                                   'met' if met else 'not met', os.path.join(args.out, 'report.md')))
     return 0 if wrong == 0 else 1
