@@ -165,7 +165,14 @@ public final class PresenceTable {
             return c;
         }
         Set<String> before = reachable();
-        if (p == null) {
+        if (p == null && away.containsKey(masId)) {
+            // back before its announcement (a broker's queue flushed first after a cut): the
+            // peer that went away, with its run's incarnation, so that what was sent to it
+            // stays owed if it goes silent again
+            p = away.remove(masId);
+            peers.put(masId, p);
+            c.events.add(masId + " is back (a message from " + agent + " is heard)");
+        } else if (p == null) {
             p = new Peer(masId, nextOrder++);
             peers.put(masId, p);
             c.events.add(masId + " heard from (message from " + agent + ") before its announcement");

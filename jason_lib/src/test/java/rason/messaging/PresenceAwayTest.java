@@ -54,6 +54,18 @@ class PresenceAwayTest {
     }
 
     @Test
+    void aMessageBeforeItsAnnouncementBringsItBackAndASecondSilenceStillLosesNothing() {
+        // after a cut, a robot's broker may flush its queued messages before its presence
+        silentUntil(3 * S);
+        assertTrue(t.messageFrom(R2, "bob", 9 * S).lost.isEmpty());
+        assertEquals(R2, t.sendableMasOf("bob"));
+        assertTrue(silentUntil(12 * S).lost.isEmpty(), "silent again: what was sent to it stays owed");
+        assertEquals(R2, t.sendableMasOf("bob"));
+        assertTrue(t.announced(R2, 7, List.of("bob"), false, 13 * S).lost.isEmpty(), "the same run: nothing lost");
+        assertEquals(Set.of("bob"), t.announced(R2, 8, List.of("bob"), false, 14 * S).lost, "a new run: lost");
+    }
+
+    @Test
     void leavingForGoodLosesIt() {
         silentUntil(3 * S);
         assertEquals(Set.of("bob"), t.announced(R2, 7, List.of(), true, 4 * S).lost);
