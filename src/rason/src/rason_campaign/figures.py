@@ -23,7 +23,8 @@ SIZE = (5.5, 3.2)
 DPI = 100
 
 
-def _save(fig, path):
+def save(fig, path):
+    """Writes a figure laid out at the campaigns' size and resolution, and frees it."""
     fig.tight_layout()
     fig.savefig(path, dpi=DPI)
     plt.close(fig)
@@ -55,7 +56,7 @@ def steps_figure(fault, results, path):
     ax.set_ylabel('latency (s)')
     ax.set_title('%s - latency by step' % fault)
     ax.legend(fontsize=7, loc='upper left', bbox_to_anchor=(1.0, 1.0))
-    _save(fig, path)
+    save(fig, path)
 
 
 def totals_figure(results, path):
@@ -79,7 +80,7 @@ def totals_figure(results, path):
     ax.set_ylabel('total latency (s)')
     ax.set_title('Total latency per run')
     ax.set_ylim(bottom=0)
-    _save(fig, path)
+    save(fig, path)
 
 
 def outcomes_figure(results, path):
@@ -97,7 +98,7 @@ def outcomes_figure(results, path):
     ax.set_xlabel('runs')
     ax.set_title('Outcomes')
     ax.legend(fontsize=7, loc='lower right')
-    _save(fig, path)
+    save(fig, path)
 
 
 def make_all(results, out_dir):

@@ -12,17 +12,11 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt  # noqa: E402
 
 from rason_campaign import fleet_report, stats  # noqa: E402
-from rason_campaign.figures import DPI, SIZE  # noqa: E402
+from rason_campaign.figures import SIZE, save  # noqa: E402
 from rason_campaign.fleet_plan import FLEET_ARMS  # noqa: E402
 
 ARM_COLOURS = {'contract_net': '#4c72b0', 'broadcast': '#c44e52'}
 WIDTH = 0.38
-
-
-def _save(fig, path):
-    fig.tight_layout()
-    fig.savefig(path, dpi=DPI)
-    plt.close(fig)
 
 
 def diagnosis_figure(results, path):
@@ -49,7 +43,7 @@ def diagnosis_figure(results, path):
     axes[0].set_ylabel('simulated s (bars: medians)')
     axes[0].set_ylim(bottom=0)
     axes[1].legend(fontsize=8, loc='upper right', framealpha=0.9)
-    _save(fig, path)
+    save(fig, path)
 
 
 def paired_figure(results, path):
@@ -66,7 +60,7 @@ def paired_figure(results, path):
     ax.set_xlabel('broadcast (s)')
     ax.set_ylabel('contract net (s)')
     ax.set_title('Same run, same robot', fontsize=9)
-    _save(fig, path)
+    save(fig, path)
 
 
 def make_all(results, out_dir):

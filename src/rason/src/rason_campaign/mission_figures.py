@@ -12,7 +12,7 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt  # noqa: E402
 
 from rason_campaign import mission_report  # noqa: E402
-from rason_campaign.figures import DPI, SIZE  # noqa: E402
+from rason_campaign.figures import SIZE, save  # noqa: E402
 from rason_campaign.plan import ARMS  # noqa: E402
 
 ARM_COLOURS = {'recovery': '#4c72b0', 'baseline': '#c44e52'}
@@ -29,12 +29,6 @@ def _faults(rows):
 
 def _offset(arm):
     return (ARMS.index(arm) - (len(ARMS) - 1) / 2.0) * WIDTH
-
-
-def _save(fig, path):
-    fig.tight_layout()
-    fig.savefig(path, dpi=DPI)
-    plt.close(fig)
 
 
 def completion_figure(rows, path):
@@ -61,7 +55,7 @@ def completion_figure(rows, path):
     ax.set_ylabel('missions completed (%)')
     ax.set_title('Completion rate per fault (95 % Wilson interval)')
     ax.legend(fontsize=7, loc='upper left', bbox_to_anchor=(1.0, 1.0))
-    _save(fig, path)
+    save(fig, path)
 
 
 def times_figure(results, rows, path):
@@ -84,7 +78,7 @@ def times_figure(results, rows, path):
     ax.set_ylabel('time to completion (s)')
     ax.set_title('Time to completion per fault (lines: medians)')
     ax.legend(fontsize=7, loc='upper left', bbox_to_anchor=(1.0, 1.0))
-    _save(fig, path)
+    save(fig, path)
 
 
 def make_all(results, out_dir):
