@@ -22,7 +22,6 @@ Private parameters:
 """
 import math
 import os
-import re
 import signal
 import threading
 import time
@@ -35,13 +34,12 @@ import rostest
 from diagnosis_reporter.report import MISSION_STATUS_NAME, STATUS_NAME
 from diagnostic_msgs.msg import DiagnosticArray
 from geometry_msgs.msg import PoseStamped
+from rason_campaign.fleet_judge import AWARD  # award(contract(...),task(...))
 from rason_msgs.msg import AgentMessage
 
 
 MISSION_LENGTH = 1.0     # metres ahead of each robot's start (the thesis's mission)
 FLEET = ['r%d' % k for k in range(1, 9)]     # rason_sim's fleet.yaml
-# award(contract(r4_robot,2),reach(r4_robot,...)): the contract's id and the task's functor
-AWARD = re.compile(r'award\((contract\([^()]*\)),(\w+)\(')
 
 
 def robot_of(agent):
