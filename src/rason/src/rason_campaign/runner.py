@@ -135,7 +135,7 @@ class PrivateMaster(object):
         if master_is_up(self.uri):
             raise RuntimeError('a ROS master already runs on port %d' % self.port)
         with open(self.log, 'ab') as out:
-            self._proc = subprocess.Popen(self._command, env=self.env(), stdout=out,
+            self._proc = subprocess.Popen(TAKING_SIGINT + self._command, env=self.env(), stdout=out,
                                           stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
                                           start_new_session=True)
         deadline = time.monotonic() + timeout
@@ -176,6 +176,12 @@ def _signal_group(pgid, sig):
         os.killpg(pgid, sig)
     except ProcessLookupError:
         pass
+
+
+# A shell starts a background job (a campaign left running) with SIGINT ignored, and its
+# children would inherit that: roscore and roslaunch would then sit out the SIGINT that stops
+# them cleanly (the bag closed) until SIGTERM after the grace. GNU env gives them the default.
+TAKING_SIGINT = ['env', '--default-signal=INT']
 
 
 def _stop(proc, grace=20.0):
@@ -291,7 +297,7 @@ def _launch(cmd, master_uri, log, timeout, env=None, on_start=None):
     timed_out = False
     t0 = time.monotonic()
     with open(log, 'a') as out:
-        proc = subprocess.Popen(cmd, stdout=out, stderr=subprocess.STDOUT,
+        proc = subprocess.Popen(TAKING_SIGINT + list(cmd), stdout=out, stderr=subprocess.STDOUT,
                                 env=dict(launch_env(master_uri), **(env or {})), stdin=subprocess.DEVNULL,
                                 start_new_session=True)
         if on_start:
