@@ -20,6 +20,9 @@ public final class MosquittoBroker implements AutoCloseable {
     private static final List<String> PLACES = List.of("/usr/sbin/mosquitto", "/usr/bin/mosquitto",
             "/usr/local/sbin/mosquitto");
     private static final long START_MS = 10_000;
+    private static final int PORT_ATTEMPTS = 3;
+    /** What mosquitto logs once its listeners are open: the port is this broker's, not another's. */
+    private static final String RUNNING = " running";
 
     private final Process process;
     private final int port;
@@ -37,9 +40,24 @@ public final class MosquittoBroker implements AutoCloseable {
         return null;
     }
 
-    /** Starts a broker (its configuration and log in dir) and waits until it takes connections. */
+    /**
+     * Starts a broker (its configuration and log in dir) on a free port and waits until it takes
+     * connections. Surefire runs test classes in two JVMs at once, so the port found free may be
+     * taken before mosquitto binds it: then it is tried again on another.
+     */
     public static MosquittoBroker start(Path dir) throws IOException, InterruptedException {
-        return start(dir, freePort());
+        return startOnAFreePort(dir, "allow_anonymous true\n");
+    }
+
+    private static MosquittoBroker startOnAFreePort(Path dir, String access) throws IOException, InterruptedException {
+        for (int attempt = 1; ; attempt++) {
+            try {
+                return start(dir, freePort(), access);
+            } catch (PortTaken e) {
+                if (attempt == PORT_ATTEMPTS)
+                    throw e;
+            }
+        }
     }
 
     /** A port of 127.0.0.1 nobody listens on now. */
@@ -63,7 +81,7 @@ public final class MosquittoBroker implements AutoCloseable {
         run(dir, "openssl", "req", "-x509", "-newkey", "rsa:2048", "-nodes", "-keyout", "key.pem", "-out", "ca.pem",
                 "-days", "1", "-subj", "/CN=127.0.0.1", "-addext", "subjectAltName=IP:127.0.0.1");
         run(dir, "mosquitto_passwd", "-c", "-b", "passwords", user, password);
-        return start(dir, freePort(), "allow_anonymous false\npassword_file " + dir.resolve("passwords")
+        return startOnAFreePort(dir, "allow_anonymous false\npassword_file " + dir.resolve("passwords")
                 + "\ncertfile " + dir.resolve("ca.pem") + "\nkeyfile " + dir.resolve("key.pem") + "\n");
     }
 
@@ -88,16 +106,19 @@ public final class MosquittoBroker implements AutoCloseable {
         Files.writeString(conf, "listener " + port + " 127.0.0.1\n" + access + "persistence false\nset_tcp_nodelay true\n"
                 // as this user: one started by root would become user mosquitto, who cannot read the test's files
                 + "user " + System.getProperty("user.name") + "\n"
-                + "log_dest stderr\nlog_type error\nlog_type warning\nlog_type notice\n");
+                + "log_dest stderr\nlog_type error\nlog_type warning\nlog_type notice\nlog_type information\n");
         Process p = new ProcessBuilder(bin.toString(), "-c", conf.toString())
                 .redirectErrorStream(true).redirectOutput(dir.resolve("mosquitto.log").toFile()).start();
         MosquittoBroker broker = new MosquittoBroker(p, port);
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(START_MS);
-        while (!broker.takesConnections()) {
+        Path log = dir.resolve("mosquitto.log");
+        while (!(Files.readString(log).contains(RUNNING) && broker.takesConnections())) {
             if (!p.isAlive() || System.nanoTime() > deadline) {
                 broker.close();
-                throw new IllegalStateException("mosquitto did not start on port " + port + ": "
-                        + Files.readString(dir.resolve("mosquitto.log")));
+                String said = Files.readString(log);
+                if (said.contains("Address already in use"))
+                    throw new PortTaken("port " + port + " was taken before mosquitto bound it: " + said);
+                throw new IllegalStateException("mosquitto did not start on port " + port + ": " + said);
             }
             Thread.sleep(10); // polling the port, with the deadline above
         }
@@ -110,6 +131,13 @@ public final class MosquittoBroker implements AutoCloseable {
             return true;
         } catch (IOException e) {
             return false;
+        }
+    }
+
+    /** Another process bound the port first. */
+    static final class PortTaken extends IllegalStateException {
+        PortTaken(String message) {
+            super(message);
         }
     }
 
