@@ -43,17 +43,24 @@ canWatch :- diagnosed(none) & missionEnded.
 
 // Seen now: the camera's angle to it.
 bid(help(C, _), C, B) :- canWatch & inView(C, Deg, _, _) & B = math.abs(Deg).
-// Not seen, but both poses known in a frame every robot shares (mapPose/3): the clockwise
-// turn (the search turns clockwise) that faces it.
-bid(help(C, at(X, Y)), C, B)
+// Not seen, but both poses known in the room's frame (mapPose/3, localization.yaml), and I
+// would not see it side-on from here: the clockwise turn that faces it.
+bid(help(C, at(X, Y, T)), C, B)
     :- canWatch & not inView(C, _, _, _) & mapPose(MX, MY, MT)
-     & relative(pose(MX, MY, MT), pose(X, Y, 0), pose(F, L, _))
-     & D = math.sqrt(F * F + L * L) & D > 0 & Ratio = F / D & cosine(Ratio, Cos)
-     & A = math.acos(Cos) * 180 / math.pi
-     & clockwiseTo(L, A, T) & B = math.round(T * 100) / 100.
+     & not sideOn(pose(X, Y, T), pose(MX, MY, MT))
+     & clockwiseFacing(pose(MX, MY, MT), X, Y, B).
+// I would see it side-on from here: I first drive to the viewpoint ahead of it or behind it
+// (viewFrom below), so I bid after every robot that can look from where it stands, the nearer
+// viewpoint first. A robot that does not perceive its own odometry (pos/3) cannot drive there
+// and does not bid.
+bid(help(C, at(X, Y, T)), C, B)
+    :- canWatch & not inView(C, _, _, _) & mapPose(MX, MY, MT) & pos(_, _, _)
+     & sideOn(pose(X, Y, T), pose(MX, MY, MT))
+     & viewpoint(pose(X, Y, T), pose(MX, MY, MT), V) & distance(pose(MX, MY, MT), V, D)
+     & searchCost(S) & B = S + math.round(D * 100) / 100.
 // Neither: a search from where I face.
 bid(help(C, Where), C, B)
-    :- canWatch & not inView(C, _, _, _) & not (Where = at(_, _) & mapPose(_, _, _)) & searchCost(B).
+    :- canWatch & not inView(C, _, _, _) & not (Where = at(_, _, _) & mapPose(_, _, _)) & searchCost(B).
 // Guiding a robot starts as watching it does: by facing it.
 bid(guide(C, Where), C, B) :- bid(help(C, Where), C, B).
 // Taking a mission over: the metres I would drive to its goal, seen from where I see the
@@ -65,15 +72,42 @@ bid(reach(C, F, L), C, B) :- canWatch & not locatedAs(C, _, _, _) & unseenReachC
 cosine(R, 1) :- R > 1.
 cosine(R, -1) :- R < -1.
 cosine(R, R) :- R >= -1 & R <= 1.
-clockwiseTo(Left, A, A) :- Left <= 0.
-clockwiseTo(Left, A, B) :- Left > 0 & B = 360 - A.
+// (Straight ahead is no turn, whatever side rounding put it on.)
+clockwiseTo(Left, A, A) :- Left <= 0 | A < 0.01.
+clockwiseTo(Left, A, B) :- Left > 0 & A >= 0.01 & B = 360 - A.
+// From pose Me (the room's frame), the clockwise turn in degrees that faces the point (X, Y),
+// and the shortest turn that does (negative: counter-clockwise, as turn/1 takes it).
+clockwiseFacing(Me, X, Y, B)
+    :- relative(Me, pose(X, Y, 0), pose(F, L, _))
+     & D = math.sqrt(F * F + L * L) & D > 0 & Ratio = F / D & cosine(Ratio, Cos)
+     & A = math.acos(Cos) * 180 / math.pi
+     & clockwiseTo(L, A, T) & B = math.round(T * 100) / 100.
+shortestTurn(B, B) :- B <= 180.
+shortestTurn(B, A) :- B > 180 & A = B - 360.
+
+/* Where a watcher sees its caller from */
+
+// A robot seen side-on shows one cylinder behind the other, and the camera never takes one
+// cylinder for a robot. Side-on: within 90 - sideOnFrom degrees of the caller's left or right
+// (its cylinders 0.227 m apart look less than 0.08 m apart, their 0.04 m width and a gap).
+sideOnFrom(70).
+viewDistance(1.5).     // m ahead of or behind the caller: its two cylinders well apart
+sideOn(Caller, Me)
+    :- relative(Caller, Me, pose(F, L, _)) & sideOnFrom(A)
+     & math.abs(L) * math.cos(A * math.pi / 180) >= math.abs(F) * math.sin(A * math.pi / 180).
+// The viewpoint on my side of the caller: viewDistance ahead of it, or behind it.
+viewpoint(Caller, Me, V)
+    :- relative(Caller, Me, pose(F, _, _)) & viewDistance(D) & aheadOrBehind(F, Sign)
+     & compose(Caller, pose(Sign * D, 0, 0), V).
+aheadOrBehind(F, 1) :- F >= 0.
+aheadOrBehind(F, -1) :- F < 0.
 
 // The robot watching me: the one I awarded the help, from the award on (its found(Me) may
 // come before its acceptance is handled).
 watchedBy(R) :- .my_name(Me) & awarded(_, help(Me, _), R).
 
 // Where I am for a watcher that does not see me: in the shared frame, when I know it.
-whereIAm(at(X, Y)) :- mapPose(X, Y, _).
+whereIAm(at(X, Y, Yaw)) :- mapPose(X, Y, Yaw).
 whereIAm(unknown) :- not mapPose(_, _, _).
 
 /* Initial goals */
@@ -146,13 +180,35 @@ whereIAm(unknown) :- not mapPose(_, _, _).
 
 /* The watcher: the robot awarded the help */
 
-+!carryOut(help(C, _), C)
++!carryOut(help(C, Where), C)
 <- .print("Watching ", C, " for its diagnosis");
     +helping(C);
     -+centringTurns(0);
+    !viewFrom(C, Where);
     !findRobot(C, 0);
     .print("helper ready.");
     .send(C, tell, found(C)).
+
+// Before the search: a caller that said where it is (at/3, the room's frame) and that I would
+// see side-on from here, I first go to the viewpoint ahead of or behind it (goto/2 takes my
+// odometry's frame); then I face it, so the search starts with it in view. It stays where it
+// called from: its move failed.
++!viewFrom(C, _) : inView(C, _, _, _) <- true.
++!viewFrom(C, at(X, Y, T))
+    : mapPose(MX, MY, MT) & pos(PX, PY, PT) & sideOn(pose(X, Y, T), pose(MX, MY, MT))
+    & viewpoint(pose(X, Y, T), pose(MX, MY, MT), V) & V = pose(VX, VY, _)
+    & relative(pose(MX, MY, MT), V, R) & compose(pose(PX, PY, PT), R, pose(GX, GY, _))
+<- .print("I would see ", C, " side-on from here: I look from (", math.round(VX * 100) / 100, ", ",
+           math.round(VY * 100) / 100, ") first");
+    goto(GX, GY);
+    !settle;
+    !faceCaller(X, Y).
++!viewFrom(_, at(X, Y, _)) <- !faceCaller(X, Y).
++!viewFrom(_, _) <- true.
++!faceCaller(X, Y) : mapPose(MX, MY, MT) & clockwiseFacing(pose(MX, MY, MT), X, Y, B) & shortestTurn(B, A)
+<- turn(A);
+    !settle.
++!faceCaller(_, _) <- true.
 
 // Where the robot I watch was seen last (helper_dialogue.asl notes it for a camera that names
 // it as its agent is named).
@@ -178,9 +234,10 @@ whereIAm(unknown) :- not mapPose(_, _, _).
 // Awarded a guide: I face the caller, then guide it as the pair's helper does
 // (helper_recovery.asl): robot_guide streams its pose as my camera sees it, and I turn to keep
 // it in view. A full circle without seeing it fails the task: the caller awards the next.
-+!carryOut(guide(C, _), C)
++!carryOut(guide(C, Where), C)
 <- .print("Guiding ", C);
     -+centringTurns(0);
+    !viewFrom(C, Where);
     !findRobot(C, 0);
     !startGuiding(C).
 

@@ -20,8 +20,9 @@ import rason.bridge.RunningAgents;
 /**
  * What a robot of the fleet program bids to watch a caller (agents/fleet/fleet_robot.asl, the
  * rule bid/3): degrees to turn before its camera faces the caller, from the camera when it sees
- * the caller, else from both poses in a shared frame, else a full search; nothing while its
- * own mission has not ended without a fault. Real Jason on the program's file.
+ * the caller, else from both poses in a shared frame (after a drive to a viewpoint, when it would
+ * see the caller side-on), else a full search; nothing while its own mission has not ended
+ * without a fault. Real Jason on the program's file.
  */
 class FleetBidsTest {
 
@@ -61,17 +62,34 @@ class FleetBidsTest {
     @Test
     void theTurnToFaceTheCallerInTheSharedFrameClockwise() throws Exception {
         RosAgArch w = watcher("diagnosed(none)", "mapPose(1,1,0)"); // at (1, 1), facing +x
-        assertEquals(0, bid(w, "help(f,at(3,1))"), 0.01, "ahead");
-        assertEquals(90, bid(w, "help(f,at(1,0))"), 0.01, "on my right: a quarter turn clockwise");
-        assertEquals(270, bid(w, "help(f,at(1,2))"), 0.01, "on my left: the search turns clockwise");
-        assertEquals(180, bid(w, "help(f,at(0,1))"), 0.01, "behind");
-        assertEquals(45, bid(w, "help(f,at(2,0))"), 0.01);
+        assertEquals(0, bid(w, "help(f,at(3,1,0))"), 0.01, "ahead");
+        assertEquals(90, bid(w, "help(f,at(1,0,1.5708))"), 0.01, "on my right: a quarter turn clockwise");
+        assertEquals(270, bid(w, "help(f,at(1,2,1.5708))"), 0.01, "on my left: the search turns clockwise");
+        assertEquals(180, bid(w, "help(f,at(0,1,0))"), 0.01, "behind");
+        assertEquals(45, bid(w, "help(f,at(2,0,2.3562))"), 0.01);
+    }
+
+    @Test
+    void aCallerISeeSideOnCostsTheDriveToAViewpointAfterEveryDirectView() throws Exception {
+        // f at (1, 3) facing +x: I, at (1, 1), am on its right, where one of its cylinders hides
+        // the other; its viewpoint on my side is 1.5 m ahead of it, (2.5, 3), 2.5 m from me
+        RosAgArch w = watcher("diagnosed(none)", "mapPose(1,1,0)", "pos(0,0,0)");
+        assertEquals(362.5, bid(w, "help(f,at(1,3,0))"), 0.01);
+        assertEquals(362.5, bid(w, "help(f,at(1,3,3.1416))"), 0.01, "facing -x: side-on too, as far");
+        assertEquals(90, bid(w, "help(f,at(1,0,1.5708))"), 0.01, "seen from ahead of it: no drive");
+        assertEquals(90, bid(w, "help(f,at(1,0,1.1))"), 0.01, "27 degrees off its front is no side-on view");
+    }
+
+    @Test
+    void aRobotThatCannotDriveToAViewpointDoesNotBidForACallerItWouldSeeSideOn() throws Exception {
+        RosAgArch w = watcher("diagnosed(none)", "mapPose(1,1,0)"); // no odometry: no goto
+        assertEquals(null, bid(w, "help(f,at(1,3,0))"));
     }
 
     @Test
     void aCallerInViewCostsItsAngleInTheCamera() throws Exception {
         RosAgArch w = watcher("diagnosed(none)", "mapPose(1,1,0)", "robot(f,-12.5,2.0,30)");
-        assertEquals(12.5, bid(w, "help(f,at(1,2))"), 0.01, "the camera, not the shared frame");
+        assertEquals(12.5, bid(w, "help(f,at(1,2,0))"), 0.01, "the camera, not the shared frame");
         assertEquals(12.5, bid(w, "help(f,unknown)"), 0.01);
     }
 
@@ -79,7 +97,7 @@ class FleetBidsTest {
     void withoutEitherAFullSearch() throws Exception {
         RosAgArch w = watcher("diagnosed(none)");
         assertEquals(360, bid(w, "help(f,unknown)"), 0.01);
-        assertEquals(360, bid(w, "help(f,at(3,1))"), 0.01, "the caller's pose, but not mine");
+        assertEquals(360, bid(w, "help(f,at(3,1,0))"), 0.01, "the caller's pose, but not mine");
     }
 
     @Test

@@ -52,6 +52,7 @@ class FleetCaseStudyTest {
     @TempDir
     Path dir;
     private FleetWorld world;
+    private boolean sideOnHidden = false;
 
     @AfterEach
     void stopWorld() throws Exception {
@@ -78,6 +79,8 @@ class FleetCaseStudyTest {
         for (Robot r : robots)
             programs.put(r.name, "{ include(\"" + FLEET_ROBOT + "\") }\n" + tuning);
         world = new FleetWorld(bridge, agents, List.of(robots), speed, sharedFrame);
+        if (sideOnHidden)
+            world.hideSideOn();
         world.park(a -> !fault(robots, a.agent()).equals("none"));
         agents.startAll(dir, programs);
         world.start();
@@ -233,7 +236,7 @@ class FleetCaseStudyTest {
         await("f to award a", 10_000, () -> awarded("f", "a"));
         Unifier u = new Unifier();
         assertTrue(agents.arch("f").getTS().getAg().believes(
-                ASSyntax.parseLiteral("contract(_,help(f,at(_,_)),[offer(B,b),offer(C,c)])"), u),
+                ASSyntax.parseLiteral("contract(_,help(f,at(_,_,_)),[offer(B,b),offer(C,c)])"), u),
                 "the other bids kept ranked: the caller sent where it is, each bid from its own pose");
         assertEquals(15.6, ((NumberTerm) u.get("B")).solve(), 0.1);
         assertEquals(180, ((NumberTerm) u.get("C")).solve(), 0.1);
@@ -241,6 +244,21 @@ class FleetCaseStudyTest {
         assertFalse(watches("a", "f") || believes(agents.arch("a"), "helping(_)"), "a forgot f");
         diagnosed("f", "right_actuator");
         assertTrue(believes(agents.arch("f"), "helpedBy(b)"), "the feedback came from b");
+    }
+
+    @Test
+    void aWatcherThatWouldSeeTheCallerSideOnLooksFromAheadOfIt() throws Exception {
+        // b, the only watcher, stands on f's left, where the camera sees one of f's cylinders
+        // behind the other and so no robot: it drives to 1.5 m ahead of f first, then faces it
+        sideOnHidden = true;
+        start(10, true, "", new Robot("f", 0, 0, 0, false, "both_actuators"),
+                new Robot("b", 0, 2.5, -90, true, "none"));
+        await("f to award b", 10_000, () -> awarded("f", "b"));
+        diagnosed("f", "both_actuators");
+        assertTrue(believes(agents.arch("f"), "helpedBy(b)"), "the feedback came from b");
+        assertTrue(world.done().stream().anyMatch(a -> a.agent().equals("b") && a.action().equals("goto")
+                && Math.abs(Double.parseDouble(a.parameters()[0]) - 1.5) < 0.05
+                && Math.abs(Double.parseDouble(a.parameters()[1])) < 0.05), "b drove to 1.5 m ahead of f");
     }
 
     @Test

@@ -17,9 +17,9 @@ import rason.core.Protocol;
 /**
  * A small world for the fleet case study's tests: robots on a floor, each agent perceiving its
  * own robot (odometry pos/3, and with a camera, vision_synth's cameraFrame/2 and robot/4 of the
- * robots in view), and the actions done at once: turn and move (a faulty robot's move as its
- * fault makes it, and failed with the reason the motion decomposer gives), report_diagnosis
- * noted. The world steps every 10 ms of wall time, a camera frame every 5 steps (20 Hz, a
+ * robots in view), and the actions done at once: turn, move (a faulty robot's move as its
+ * fault makes it, and failed with the reason the motion decomposer gives) and goto (a robot
+ * without a fault), report_diagnosis noted. The world steps every 10 ms of wall time, a camera frame every 5 steps (20 Hz, a
  * Kinect's rate is 30); ROS time runs with the wall, or faster
  * (as the simulator at rate 0). With a shared frame every robot also perceives mapPose/3, its
  * pose in the world.
@@ -70,6 +70,7 @@ final class FleetWorld implements AutoCloseable {
     private final Thread thread;
     private final long rosPerStep;
     private final boolean sharedFrame;
+    private volatile boolean sideOnHidden = false;
     private static final long START = 100 * RunningAgents.SECOND;
     private long now = START;
     private static final int STEPS_PER_FRAME = 5;
@@ -93,6 +94,22 @@ final class FleetWorld implements AutoCloseable {
 
     void start() {
         thread.start();
+    }
+
+    /**
+     * From now on a camera does not see a robot side-on, within {@link #SIDE_ON_DEG} of its left
+     * or right (one cylinder behind the other: vision_synth never takes one for a robot).
+     */
+    void hideSideOn() {
+        sideOnHidden = true;
+    }
+
+    static final double SIDE_ON_DEG = 15;
+
+    /** Whether a camera at pose sees robot side-on. */
+    static boolean sideOn(double[] pose, double[] robot) {
+        double towardsCamera = Math.atan2(pose[1] - robot[1], pose[0] - robot[0]) - robot[2];
+        return Math.abs(Math.cos(towardsCamera)) < Math.sin(Math.toRadians(SIDE_ON_DEG));
     }
 
     /** Actions that match are held, unanswered, until {@link #releaseParked}. */
@@ -238,7 +255,7 @@ final class FleetWorld implements AutoCloseable {
             if (other == r)
                 continue;
             double[] v = CameraFrames.view(p, other.pose);
-            if (v[1] > 0.2 && v[1] < 6 && Math.abs(v[0]) < HALF_FOV)
+            if (v[1] > 0.2 && v[1] < 6 && Math.abs(v[0]) < HALF_FOV && !(sideOnHidden && sideOn(p, other.pose)))
                 seen.add(String.format(Locale.ROOT, "robot(%s,%.2f,%.3f,%.2f)", other.seenAs, v[0], v[1], v[2]));
         }
         agents.perceive(r.name, "vision_synth_robots", now, seen.toArray(String[]::new));
@@ -252,6 +269,7 @@ final class FleetWorld implements AutoCloseable {
             switch (a.action()) {
             case "turn" -> r.pose[2] -= Math.toRadians(Double.parseDouble(a.parameters()[0]));
             case "move" -> result = move(r, Double.parseDouble(a.parameters()[0]));
+            case "goto" -> driveTo(r, Double.parseDouble(a.parameters()[0]), Double.parseDouble(a.parameters()[1]));
             case "report_diagnosis" -> diagnoses.put(r.name, a.parameters()[0]);
             default -> {
             }
@@ -261,6 +279,15 @@ final class FleetWorld implements AutoCloseable {
             done.add(a);
         }
         bridge.actions().event(a.agent(), Protocol.ACTION_FEEDBACK, new String[] { result, "" + a.actionId() });
+    }
+
+    /** A robot without a fault at (x, y) of its odometry (the world's frame), facing the way it drove. */
+    private static void driveTo(Robot r, double x, double y) {
+        double[] p = r.pose;
+        if (Math.hypot(x - p[0], y - p[1]) > 1e-6)
+            p[2] = Math.atan2(y - p[1], x - p[0]);
+        p[0] = x;
+        p[1] = y;
     }
 
     private static String move(Robot r, double d) {
