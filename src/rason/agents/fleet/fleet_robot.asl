@@ -49,14 +49,14 @@ bid(help(C, at(X, Y, T)), C, B)
     :- canWatch & not inView(C, _, _, _) & mapPose(MX, MY, MT)
      & not sideOn(pose(X, Y, T), pose(MX, MY, MT))
      & clockwiseFacing(pose(MX, MY, MT), X, Y, B).
-// I would see it side-on from here: I first drive to the viewpoint ahead of it or behind it
+// I would see it side-on from here: I first drive to the vantage point ahead of it or behind it
 // (viewFrom below), so I bid after every robot that can look from where it stands, the nearer
-// viewpoint first. A robot that does not perceive its own odometry (pos/3) cannot drive there
+// vantage point first. A robot that does not perceive its own odometry (pos/3) cannot drive there
 // and does not bid.
 bid(help(C, at(X, Y, T)), C, B)
     :- canWatch & not inView(C, _, _, _) & mapPose(MX, MY, MT) & pos(_, _, _)
      & sideOn(pose(X, Y, T), pose(MX, MY, MT))
-     & viewpoint(pose(X, Y, T), pose(MX, MY, MT), V) & distance(pose(MX, MY, MT), V, D)
+     & vantagePoint(pose(X, Y, T), pose(MX, MY, MT), V) & distance(pose(MX, MY, MT), V, D)
      & searchCost(S) & B = S + math.round(D * 100) / 100.
 // Neither: a search from where I face.
 bid(help(C, Where), C, B)
@@ -95,8 +95,9 @@ viewDistance(1.5).     // m ahead of or behind the caller: its two cylinders wel
 sideOn(Caller, Me)
     :- relative(Caller, Me, pose(F, L, _)) & sideOnFrom(A)
      & math.abs(L) * math.cos(A * math.pi / 180) >= math.abs(F) * math.sin(A * math.pi / 180).
-// The viewpoint on my side of the caller: viewDistance ahead of it, or behind it.
-viewpoint(Caller, Me, V)
+// The vantage point on my side of the caller: viewDistance ahead of it, or behind it. (Not
+// viewpoint/3: helper_dialogue.asl keeps a belief of that name, and removes it.)
+vantagePoint(Caller, Me, V)
     :- relative(Caller, Me, pose(F, _, _)) & viewDistance(D) & aheadOrBehind(F, Sign)
      & compose(Caller, pose(Sign * D, 0, 0), V).
 aheadOrBehind(F, 1) :- F >= 0.
@@ -190,13 +191,13 @@ whereIAm(unknown) :- not mapPose(_, _, _).
     .send(C, tell, found(C)).
 
 // Before the search: a caller that said where it is (at/3, the room's frame) and that I would
-// see side-on from here, I first go to the viewpoint ahead of or behind it (goto/2 takes my
+// see side-on from here, I first go to the vantage point ahead of or behind it (goto/2 takes my
 // odometry's frame); then I face it, so the search starts with it in view. It stays where it
 // called from: its move failed.
 +!viewFrom(C, _) : inView(C, _, _, _) <- true.
 +!viewFrom(C, at(X, Y, T))
     : mapPose(MX, MY, MT) & pos(PX, PY, PT) & sideOn(pose(X, Y, T), pose(MX, MY, MT))
-    & viewpoint(pose(X, Y, T), pose(MX, MY, MT), V) & V = pose(VX, VY, _)
+    & vantagePoint(pose(X, Y, T), pose(MX, MY, MT), V) & V = pose(VX, VY, _)
     & relative(pose(MX, MY, MT), V, R) & compose(pose(PX, PY, PT), R, pose(GX, GY, _))
 <- .print("I would see ", C, " side-on from here: I look from (", math.round(VX * 100) / 100, ", ",
            math.round(VY * 100) / 100, ") first");

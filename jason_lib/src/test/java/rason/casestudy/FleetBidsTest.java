@@ -37,7 +37,12 @@ class FleetBidsTest {
     private long now = 100 * RunningAgents.SECOND;
 
     private RosAgArch watcher(String... perceptions) throws Exception {
-        RosAgArch arch = agents.start(dir, "w", "{ include(\"" + FLEET_ROBOT + "\") }\n");
+        return watcherWith("", perceptions);
+    }
+
+    /** The same, with plans added to the program. */
+    private RosAgArch watcherWith(String plans, String... perceptions) throws Exception {
+        RosAgArch arch = agents.start(dir, "w", "{ include(\"" + FLEET_ROBOT + "\") }\n" + plans);
         perceive(perceptions);
         return arch;
     }
@@ -78,6 +83,19 @@ class FleetBidsTest {
         assertEquals(362.5, bid(w, "help(f,at(1,3,3.1416))"), 0.01, "facing -x: side-on too, as far");
         assertEquals(90, bid(w, "help(f,at(1,0,1.5708))"), 0.01, "seen from ahead of it: no drive");
         assertEquals(90, bid(w, "help(f,at(1,0,1.1))"), 0.01, "27 degrees off its front is no side-on view");
+    }
+
+    @Test
+    void aWatchThatEndedLeavesTheBidsAsTheyWere() throws Exception {
+        // what a watcher does when its caller releases it (the pair's helper forgets its own
+        // viewpoint/3 then): a robot free again bids as before
+        RosAgArch w = watcherWith("+!release <- !stopWatching(g); +released.\n",
+                "diagnosed(none)", "mapPose(1,1,0)", "pos(0,0,0)");
+        w.getTS().getC().addAchvGoal(Literal.parseLiteral("release"), null);
+        w.wakeUpSense();
+        RunningAgents.await("the watch to end", () -> RunningAgents.believes(w, "released"));
+        assertEquals(362.5, bid(w, "help(f,at(1,3,0))"), 0.01, "side-on: the drive to the vantage point");
+        assertEquals(0, bid(w, "help(f,at(3,1,0))"), 0.01, "ahead");
     }
 
     @Test
