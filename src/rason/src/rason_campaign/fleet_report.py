@@ -194,8 +194,8 @@ def markdown(meta, results, figures):
                     len(pairs), faster, _s(stats.median(differences)),
                     _s(stats.percentile(differences, 10)), _s(stats.percentile(differences, 90))),
                 '',
-                'The arms chose a different first watcher for %d of these %d faulty robots (most calls '
-                'find one robot free to watch, whom both arms choose)%s.' % (
+                'The arms chose a different first watcher for %d of these %d faulty robots (for the '
+                'others both chose the same robot, often the only one free to watch)%s.' % (
                     len(chosen), len(pairs),
                     '; for those, award to diagnosis median %s s by contract net, %s s by broadcast'
                     % (_s(stats.median([cn for cn, _ in apart])), _s(stats.median([bc for _, bc in apart])))
