@@ -42,8 +42,9 @@ public final class MosquittoBroker implements AutoCloseable {
 
     /**
      * Starts a broker (its configuration and log in dir) on a free port and waits until it takes
-     * connections. Surefire runs test classes in two JVMs at once, so the port found free may be
-     * taken before mosquitto binds it: then it is tried again on another.
+     * connections. make test runs other suites beside JUnit, with brokers and clients of their
+     * own, so the port found free may be taken before mosquitto binds it: then it is tried again
+     * on another.
      */
     public static MosquittoBroker start(Path dir) throws IOException, InterruptedException {
         return startOnAFreePort(dir, "allow_anonymous true\n");

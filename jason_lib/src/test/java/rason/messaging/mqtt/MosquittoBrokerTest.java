@@ -11,8 +11,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * The tests' broker on a port somebody else holds: two Surefire JVMs pick free ports at once,
- * and a test must not talk to another test's broker believing it its own.
+ * The tests' broker on a port somebody else holds: make test's other suites pick free ports
+ * too, and a test must not talk to another suite's broker believing it its own.
  */
 class MosquittoBrokerTest {
 
