@@ -30,12 +30,12 @@ BROKER_TOPIC = 'rason/topics' + TOPIC
 POSE = "{header: {stamp: now, frame_id: seer/odom}, pose: {position: {x: 1.5}, orientation: {w: 1.0}}}"
 POSES = 40
 # prints each pose it hears: x, the stamp, and how late it is
-LISTENER = '''import sys, rospy
+LISTENER = '''import sys, rason_rospy, rospy
 from geometry_msgs.msg import PoseStamped
 def heard(msg):
     late = (rospy.get_rostime() - msg.header.stamp).to_sec()
     print('pose', msg.pose.position.x, msg.header.stamp.to_sec(), late, flush=True)
-rospy.init_node('listener', anonymous=True)
+rason_rospy.init_node('listener', anonymous=True)
 rospy.Subscriber(sys.argv[1], PoseStamped, heard)
 rospy.spin()
 '''

@@ -11,6 +11,7 @@ jason/action and jason/event go through rason_decomposer's Decomposer.
 """
 import threading
 
+import rason_rospy
 import rospy
 from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus, KeyValue
 from rason_decomposer.node import Decomposer
@@ -64,7 +65,7 @@ class DiagnosisReporter(object):
 
 
 def main():
-    rospy.init_node('diagnosis_reporter')
+    rason_rospy.init_node('diagnosis_reporter')
     namespace = rospy.get_namespace().strip('/') or 'robot'
     DiagnosisReporter(rospy.get_param('~hardware_id', namespace), float(rospy.get_param('~period', 1.0)))
     rospy.spin()

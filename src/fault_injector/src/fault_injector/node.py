@@ -47,6 +47,7 @@ logged with a throttled warning; it never stops the node.
 """
 import threading
 
+import rason_rospy
 import rospy
 from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus, KeyValue
 from geometry_msgs.msg import Twist, Vector3
@@ -201,7 +202,7 @@ class FaultInjectorNode(object):
 
 def main():
     """Entry point of ``rosrun fault_injector fault_injector_node``."""
-    rospy.init_node('fault_injector')
+    rason_rospy.init_node('fault_injector')
     initial = rospy.get_param('~initial_fault', faults.NONE)
     period = float(rospy.get_param('~status_period', 1.0))
     fault_at = rospy.get_param('~fault_at', 0.0)

@@ -19,6 +19,7 @@ goto's ``~linear_speed`` 0.2, ``~angular_speed`` 0.5, ``~xy_tolerance`` 0.05,
 ``~yaw_tolerance`` 0.05, ``~no_progress_time`` 2.0, ``~max_duration`` 50. Times are ROS time.
 """
 import actionlib
+import rason_rospy
 import rospy
 from geometry_msgs.msg import PoseStamped, Twist
 from move_base_msgs.msg import MoveBaseAction, MoveBaseFeedback
@@ -126,7 +127,7 @@ class MoveBaseServer(object):
 
 def main():
     """Entry point of ``move_base_server``: reads ~params, then spins."""
-    rospy.init_node('move_base_server')
+    rason_rospy.init_node('move_base_server')
     options = {key: rospy.get_param('~' + key, default) for key, default in goto.DEFAULTS.items()}
     try:
         rate = float(rospy.get_param('~rate', 50.0))

@@ -58,6 +58,7 @@ All times are ROS time (``/use_sim_time`` works).
 import math
 import threading
 
+import rason_rospy
 import rospy
 from geometry_msgs.msg import PoseStamped, Twist
 from nav_msgs.msg import Odometry
@@ -319,7 +320,7 @@ class MotionDecompNode(object):
 
 def main():
     """Entry point of ``motion_decomp_node``: reads ~params, then spins."""
-    rospy.init_node('motion_decomp')
+    rason_rospy.init_node('motion_decomp')
     options = {key: rospy.get_param('~' + key, default) for key, default in monitor.DEFAULTS.items()}
     rate = float(rospy.get_param('~rate', 20.0))
     agents = agent_filter(rospy.get_param('~agents', []))

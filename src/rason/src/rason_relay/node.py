@@ -27,6 +27,7 @@ import termios
 import threading
 import time
 
+import rason_rospy
 import rospy
 import roslib.message
 
@@ -200,7 +201,7 @@ class TopicRelay:
 
 
 def main(argv=None):
-    rospy.init_node('topic_relay', argv=argv)
+    rason_rospy.init_node('topic_relay', argv=argv)
     namespace = rospy.get_namespace().strip('/') or rospy.get_name().strip('/')
     try:
         settings = parse_settings(rospy.get_param('~', {}), rospy.resolve_name, namespace)

@@ -48,11 +48,12 @@ def marker(index, agent, level, text, pose, frame='world', stamp=None):
 
 
 def main():
+    import rason_rospy
     import rospy
     from diagnostic_msgs.msg import DiagnosticArray
     from geometry_msgs.msg import PoseStamped
 
-    rospy.init_node('diagnosis_marker')
+    rason_rospy.init_node('diagnosis_marker')
     pub = rospy.Publisher('diagnosis_markers', MarkerArray, queue_size=1, latch=True)
     diagnoses, poses, subs = {}, {}, {}
 

@@ -1,5 +1,6 @@
 """``rosrun rason rason_dialogue``: prints the agents' dialogue (/rason/messages) and each
 new diagnosis and mission outcome (/diagnostics), one line each, e.g. for make demo."""
+import rason_rospy
 import rospy
 from diagnostic_msgs.msg import DiagnosticArray
 from rason_msgs.msg import AgentMessage
@@ -12,7 +13,7 @@ FORMATS = {STATUS_NAME: format_diagnosis, MISSION_STATUS_NAME: format_mission}
 
 
 def main():
-    rospy.init_node('rason_dialogue')
+    rason_rospy.init_node('rason_dialogue')
     printed = set()
 
     def on_message(msg):

@@ -17,6 +17,7 @@ rason_decomposer's Decomposer.
 """
 import threading
 
+import rason_rospy
 import rospy
 from rason_decomposer.node import Decomposer
 from rason_msgs.msg import Perception
@@ -73,6 +74,6 @@ class FakeRobot(object):
 
 
 def main():
-    rospy.init_node('fake_robot')
+    rason_rospy.init_node('fake_robot')
     FakeRobot()
     rospy.spin()

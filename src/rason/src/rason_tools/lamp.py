@@ -2,6 +2,7 @@
 a service switches (the patrol example calls it through generic_decomposer). It logs each
 switch and answers success, or a failure (message ``already_on`` / ``already_off``) when the
 lamp is already so."""
+import rason_rospy
 import rospy
 from std_srvs.srv import SetBool, SetBoolResponse
 
@@ -20,7 +21,7 @@ class Lamp(object):
 
 
 def main():
-    rospy.init_node('lamp')
+    rason_rospy.init_node('lamp')
     lamp = Lamp()
 
     def serve(request):

@@ -40,10 +40,12 @@ def main():
     import threading
     import time
 
+    import rason_rospy
+
     import rospy
     from diagnostic_msgs.msg import DiagnosticArray
 
-    rospy.init_node('missions_done')
+    rason_rospy.init_node('missions_done')
     try:
         awaited = MissionsAwaited(rospy.get_param('~agents', '').split())
     except ValueError as e:

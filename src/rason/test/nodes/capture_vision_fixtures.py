@@ -13,6 +13,7 @@ import os
 import sys
 
 import numpy as np
+import rason_rospy
 import rospy
 from sensor_msgs.msg import PointCloud2
 
@@ -46,7 +47,7 @@ def main(out_dir, prefix, scenes):
     sys.path.insert(0, os.path.join(HERE, '..', '..', '..', 'vision_synth', 'test'))
     import vision_fixtures  # the vision_synth tests' own loader/saver
     from vision_synth import cloud
-    rospy.init_node('capture_vision_fixtures')
+    rason_rospy.init_node('capture_vision_fixtures')
     helper, faulty = SimRobot('helper'), SimRobot('faulty')
     for name, helper_pose, spec, in_view in SCENES:
         if scenes and name not in scenes:

@@ -7,6 +7,8 @@ import sys
 import threading
 import time
 
+import rason_rospy
+
 import rospy
 from geometry_msgs.msg import PoseStamped, Twist
 from nav_msgs.msg import Odometry
@@ -118,7 +120,7 @@ class Probe:
 
 
 def main():
-    rospy.init_node('simlink_probe', anonymous=True, disable_signals=True)
+    rason_rospy.init_node('simlink_probe', anonymous=True, disable_signals=True)
     probe = Probe(sys.argv[1])
     print(json.dumps({'ready': True}), flush=True)
     for line in sys.stdin:

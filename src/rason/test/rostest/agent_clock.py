@@ -9,6 +9,8 @@ import threading
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 from rosgraph_msgs.msg import Clock, Log
@@ -89,5 +91,5 @@ class TestAgentClock(unittest.TestCase):
 
 
 if __name__ == '__main__':
-    rospy.init_node('test_agent_clock')
+    rason_rospy.init_node('test_agent_clock')
     rostest.rosrun('rason', 'agent_clock', TestAgentClock)

@@ -5,6 +5,8 @@ import os
 import sys
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -30,7 +32,7 @@ DIALOGUE = [
 class TestAppendixA(unittest.TestCase):
 
     def test_both_actuators_diagnosed_in_the_thesis_order(self):
-        rospy.init_node('test_appendix_a')
+        rason_rospy.init_node('test_appendix_a')
         log = LogWatcher()
         self.assertTrue(log.wait_ready())  # the agents wait 4 s before anything
         self.assertTrue(log.wait_for(DIALOGUE[-1], timeout=60), 'the exchange did not finish')

@@ -10,6 +10,7 @@ import unittest
 from xmlrpc.client import ServerProxy
 
 import rosgraph
+import rason_rospy
 import rospy
 import rostest
 
@@ -29,7 +30,7 @@ class TestBadProjects(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_bad_projects')
+        rason_rospy.init_node('test_bad_projects')
         cls.log = LogWatcher()
 
     def refused(self, project, name, *params):

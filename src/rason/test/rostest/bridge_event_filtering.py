@@ -5,6 +5,8 @@ import os
 import sys
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -16,7 +18,7 @@ from rason_msgs.msg import Action, Event  # noqa: E402
 class TestEventFiltering(unittest.TestCase):
 
     def setUp(self):
-        rospy.init_node('test_bridge_event_filtering')
+        rason_rospy.init_node('test_bridge_event_filtering')
         self.log = LogWatcher()
         self.actions = []
         # this test is the decomposer of hold(1)

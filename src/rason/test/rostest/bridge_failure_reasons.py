@@ -4,6 +4,8 @@ import os
 import sys
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -15,7 +17,7 @@ class TestFailureReasons(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_bridge_failure_reasons')
+        rason_rospy.init_node('test_bridge_failure_reasons')
         cls.log = LogWatcher()
         cls.go = start_agents(cls.log)
 

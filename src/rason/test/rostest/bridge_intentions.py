@@ -4,6 +4,8 @@ import os
 import sys
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -16,7 +18,7 @@ class TestIntentions(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_bridge_intentions')
+        rason_rospy.init_node('test_bridge_intentions')
         cls.log = LogWatcher()
         cls.actions = []
         rospy.Subscriber('jason/action', Action, cls.actions.append)

@@ -4,6 +4,8 @@ import os
 import sys
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -14,7 +16,7 @@ from rason_testing import LogWatcher, start_agents  # noqa: E402
 class TestNoDecomposer(unittest.TestCase):
 
     def test_action_without_subscriber_fails_no_decomposer(self):
-        rospy.init_node('test_bridge_no_decomposer')
+        rason_rospy.init_node('test_bridge_no_decomposer')
         log = LogWatcher()
         go = start_agents(log)  # noqa: F841 (kept alive for its latch)
         failed = log.wait_for(r'^\[holder\] hold has no decomposer$', timeout=30)

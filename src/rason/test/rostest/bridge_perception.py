@@ -7,6 +7,8 @@ import threading
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -20,7 +22,7 @@ class TestPerception(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_bridge_perception')
+        rason_rospy.init_node('test_bridge_perception')
         cls.log = LogWatcher()
         assert cls.log.wait_ready()
         cls.pub = rospy.Publisher('jason/perception', Perception, queue_size=100)

@@ -8,6 +8,8 @@ import sys
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -21,7 +23,7 @@ class TestShutdown(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_bridge_shutdown')
+        rason_rospy.init_node('test_bridge_shutdown')
         cls.log = LogWatcher()
         cls.actions = []
         # this test takes hold(1) and never answers, so it stays pending (the bridge's own

@@ -7,6 +7,8 @@ import sys
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -18,7 +20,7 @@ from rason_msgs.msg import Action, Event  # noqa: E402
 class TestTimeout(unittest.TestCase):
 
     def test_unanswered_action_times_out_and_late_feedback_is_ignored(self):
-        rospy.init_node('test_bridge_timeout')
+        rason_rospy.init_node('test_bridge_timeout')
         log = LogWatcher()
         seen = []
         rospy.Subscriber('jason/action', Action,

@@ -15,6 +15,7 @@ import unittest
 from xmlrpc.client import ServerProxy
 
 import rosgraph
+import rason_rospy
 import rospy
 import rostest
 from diagnosis_reporter.report import STATUS_NAME
@@ -103,5 +104,5 @@ class TestCaseStudy(unittest.TestCase):
 
 
 if __name__ == '__main__':
-    rospy.init_node('test_case_study')
+    rason_rospy.init_node('test_case_study')
     rostest.rosrun('rason', 'case_study', TestCaseStudy)

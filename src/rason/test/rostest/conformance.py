@@ -14,6 +14,8 @@ import threading
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -92,7 +94,7 @@ class TestConformance(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_conformance')
+        rason_rospy.init_node('test_conformance')
 
     def check(self, program):
         directory = os.path.join(CONFORMANCE, program)

@@ -10,6 +10,7 @@ import time
 import unittest
 
 import rosnode
+import rason_rospy
 import rospy
 import rostest
 
@@ -60,7 +61,7 @@ def arrows(driver):
 class TestDashboardLive(unittest.TestCase):
 
     def test_live_then_replayed(self):
-        rospy.init_node('test_dashboard_live')
+        rason_rospy.init_node('test_dashboard_live')
         started = time.time()
         deadline = time.monotonic() + 30
         while not rospy.has_param('/dashboard/url'):

@@ -18,6 +18,8 @@ import threading
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 from diagnosis_reporter.report import MISSION_STATUS_NAME, STATUS_NAME
@@ -127,5 +129,5 @@ class TestFaultTolerance(unittest.TestCase):
 
 
 if __name__ == '__main__':
-    rospy.init_node('test_fault_tolerance')
+    rason_rospy.init_node('test_fault_tolerance')
     rostest.rosrun('rason', 'fault_tolerance', TestFaultTolerance)

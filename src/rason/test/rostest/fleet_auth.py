@@ -20,6 +20,8 @@ import threading
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -38,7 +40,7 @@ class TestFleetAuth(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_fleet_auth')
+        rason_rospy.init_node('test_fleet_auth')
         cls.log = LogWatcher()
         cls.r1 = Robot('robot1')
         cls.r2 = Robot('robot2')

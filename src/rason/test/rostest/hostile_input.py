@@ -15,6 +15,8 @@ import threading
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -119,7 +121,7 @@ class TestHostileInput(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_hostile_input')
+        rason_rospy.init_node('test_hostile_input')
         cls.log = LogWatcher()
 
     def setUp(self):

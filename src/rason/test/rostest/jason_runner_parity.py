@@ -9,6 +9,8 @@ import re
 import sys
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -32,7 +34,7 @@ class TestJasonRunnerParity(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_jason_runner_parity')
+        rason_rospy.init_node('test_jason_runner_parity')
 
     def both(self, mas2j, name):
         jason = run_jason(mas2j, RUN_TIMEOUT)

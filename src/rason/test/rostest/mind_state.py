@@ -8,6 +8,7 @@ import time
 import unittest
 
 import rosgraph
+import rason_rospy
 import rospy
 import rostest
 
@@ -89,7 +90,7 @@ class TestMindState(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_mind_state')
+        rason_rospy.init_node('test_mind_state')
         cls.follow = Courier('follow')
         cls.busy = Courier()
 

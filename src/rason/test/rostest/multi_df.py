@@ -12,6 +12,8 @@ import sys
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -29,7 +31,7 @@ class TestDirectoryAcrossRobots(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_multi_df')
+        rason_rospy.init_node('test_multi_df')
         cls.log = LogWatcher()
         cls.robot1 = Robot('robot1')
         cls.robot4 = Robot('robot4')

@@ -8,6 +8,8 @@ import subprocess
 import sys
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -22,7 +24,7 @@ class TestNaming(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_multi_naming')
+        rason_rospy.init_node('test_multi_naming')
         cls.log = LogWatcher()
         cls.r1 = Robot('robot1')
         cls.r2 = Robot('robot2')

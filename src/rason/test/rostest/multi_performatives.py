@@ -9,6 +9,8 @@ import sys
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -22,7 +24,7 @@ class TestPerformatives(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_multi_performatives')
+        rason_rospy.init_node('test_multi_performatives')
         cls.log = LogWatcher()
         cls.r1 = Robot('robot1')  # alice (commands) and ann
         cls.r2 = Robot('robot2')  # bob

@@ -10,6 +10,8 @@ import threading
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -27,7 +29,7 @@ class TestPresence(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_multi_presence')
+        rason_rospy.init_node('test_multi_presence')
         cls.log = LogWatcher()
         cls.alice = Robot('robot1')
         cls.bob = Robot('robot2')

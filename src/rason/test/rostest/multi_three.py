@@ -6,6 +6,8 @@ import os
 import sys
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -19,7 +21,7 @@ class TestThreeProcesses(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_multi_three')
+        rason_rospy.init_node('test_multi_three')
         cls.log = LogWatcher()
         cls.robots = {a: Robot('robot%d' % (i + 1)) for i, a in enumerate(AGENTS)}
         for r in cls.robots.values():

@@ -9,6 +9,8 @@ import sys
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -22,7 +24,7 @@ class TestTwoProcesses(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_multi_two')
+        rason_rospy.init_node('test_multi_two')
         cls.log = LogWatcher()
         cls.r1 = Robot('robot1')
         cls.r2 = Robot('robot2')

@@ -12,6 +12,7 @@ import time
 import unittest
 
 import rospkg
+import rason_rospy
 import rospy
 import rostest
 
@@ -41,7 +42,7 @@ class TestPatrol(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_patrol')
+        rason_rospy.init_node('test_patrol')
         cls.log = LogWatcher()
         cls.robot = SimRobot(NS)
         cls.watch = BaseWatch(NS)

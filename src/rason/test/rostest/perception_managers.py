@@ -10,6 +10,8 @@ import sys
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -25,7 +27,7 @@ class TestPerceptionManagers(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_perception_managers')
+        rason_rospy.init_node('test_perception_managers')
         cls.log = LogWatcher()
         cls.pub = rospy.Publisher('jason/perception', Perception, queue_size=100)
         assert wait_for_subscribers(cls.pub, timeout=30)

@@ -11,6 +11,8 @@ import threading
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -83,7 +85,7 @@ class TestPreemption(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_preemption')
+        rason_rospy.init_node('test_preemption')
         cls.log = LogWatcher()
         cls.robot = SimRobot(NS)
         cls.track = Track()

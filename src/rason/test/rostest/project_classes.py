@@ -11,6 +11,8 @@ import sys
 import tempfile
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -38,7 +40,7 @@ class TestProjectClasses(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_project_classes')
+        rason_rospy.init_node('test_project_classes')
         cls.tmp = tempfile.mkdtemp(prefix='rason_project_classes_')
         # one javac for everything: mylib's classes as a folder, the environment as a jar
         compiled = os.path.join(cls.tmp, 'compiled')

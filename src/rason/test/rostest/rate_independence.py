@@ -15,6 +15,8 @@ import shutil
 import tempfile
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -60,5 +62,5 @@ class TestRateIndependence(unittest.TestCase):
 
 
 if __name__ == '__main__':
-    rospy.init_node('test_rate_independence')
+    rason_rospy.init_node('test_rate_independence')
     rostest.rosrun('rason', 'rate_independence', TestRateIndependence)

@@ -8,6 +8,8 @@ import re
 import sys
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -21,7 +23,7 @@ class TestRunLaunch(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_run_launch')
+        rason_rospy.init_node('test_run_launch')
 
     def test_a_run_that_ends_well_ends_quietly_with_status_0(self):
         status, output = run_launch('demo.launch')

@@ -9,6 +9,8 @@ import threading
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -54,7 +56,7 @@ class TestSimFleet(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_sim_fleet')
+        rason_rospy.init_node('test_sim_fleet')
         cls.robots = {r: SimRobot(r) for r in RUNNING}
         cls.odometry = {r: LatestOdometry(r) for r in RUNNING}
 

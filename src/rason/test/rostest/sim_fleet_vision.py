@@ -10,6 +10,8 @@ import threading
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -69,7 +71,7 @@ class TestSimFleetVision(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_sim_fleet_vision')
+        rason_rospy.init_node('test_sim_fleet_vision')
         cls.frames = Frames()
         cls.robots = {r: SimRobot(r) for r in ('r1',) + SEEN}
 

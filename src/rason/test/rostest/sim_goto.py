@@ -10,6 +10,8 @@ import sys
 import threading
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -91,7 +93,7 @@ class TestSimGoto(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_sim_goto')
+        rason_rospy.init_node('test_sim_goto')
         cls.robot = SimRobot('faulty')
         cls.watch = BaseWatch('faulty')
         cls.guided = GuidedPoses()

@@ -13,6 +13,8 @@ import threading
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -188,7 +190,7 @@ class TestSimGuide(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_sim_guide')
+        rason_rospy.init_node('test_sim_guide')
         cls.helper = SimRobot('helper')
         cls.faulty = SimRobot('faulty')
         cls.helper_odom = Stamped('/helper/odom', Odometry, pose_of_odometry)

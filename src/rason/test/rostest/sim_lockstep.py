@@ -8,6 +8,8 @@ import threading
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 from rosgraph_msgs.msg import Clock
@@ -59,7 +61,7 @@ class TestSimLockstep(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_sim_lockstep')
+        rason_rospy.init_node('test_sim_lockstep')
 
     def test_every_frame_is_processed_before_the_simulation_moves_past_the_next(self):
         sent, done, _ = FrameWatch().wait_for_frames(FRAMES, 90)

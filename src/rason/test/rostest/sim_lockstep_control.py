@@ -9,6 +9,8 @@ import threading
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 from geometry_msgs.msg import Twist
@@ -87,7 +89,7 @@ class TestSimLockstepControl(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_sim_lockstep_control')
+        rason_rospy.init_node('test_sim_lockstep_control')
         cls.clocks = Clocks()
         cls.relay = SlowRelay(cls.clocks)
         cls.cmd_vel = rospy.Publisher('/helper/cmd_vel', Twist, queue_size=10)

@@ -7,6 +7,8 @@ import sys
 import threading
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 import tf2_ros
@@ -48,7 +50,7 @@ class TestSimMotion(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_sim_motion')
+        rason_rospy.init_node('test_sim_motion')
         cls.robot = SimRobot('faulty')
         cls.path = PathRecorder('faulty')
         rospy.wait_for_service('/faulty/inject_fault', timeout=30)

@@ -10,6 +10,7 @@ import time
 import unittest
 
 import actionlib
+import rason_rospy
 import rospy
 import rostest
 
@@ -37,7 +38,7 @@ class TestSimMoveBase(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_sim_move_base')
+        rason_rospy.init_node('test_sim_move_base')
         cls.robot = SimRobot('faulty')
         cls.watch = BaseWatch('faulty')
         rospy.wait_for_service('/faulty/inject_fault', timeout=30)

@@ -11,6 +11,7 @@ import unittest
 import xmlrpc.client
 
 import rosgraph
+import rason_rospy
 import rospy
 import rostest
 from rosgraph_msgs.msg import Clock
@@ -47,7 +48,7 @@ def node_pid(name):
 class TestSimPacing(unittest.TestCase):
 
     def test_after_a_stall_the_simulation_goes_on_at_its_factor(self):
-        rospy.init_node('test_sim_pacing')
+        rason_rospy.init_node('test_sim_pacing')
         watch = ClockWatch()
         deadline = time.monotonic() + 30
         while time.monotonic() < deadline and watch.sim_at(time.monotonic()) is None:

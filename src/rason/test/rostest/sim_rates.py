@@ -7,6 +7,8 @@ import threading
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 from nav_msgs.msg import Odometry
@@ -37,7 +39,7 @@ class Counter(object):
 class TestSimRates(unittest.TestCase):
 
     def test_everything_keeps_publishing_and_the_clock_advances(self):
-        rospy.init_node('test_sim_rates')
+        rason_rospy.init_node('test_sim_rates')
         counters = {
             'faulty odom': Counter('/faulty/odom', Odometry),
             'helper odom': Counter('/helper/odom', Odometry),

@@ -7,6 +7,8 @@ import os
 import sys
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -23,7 +25,7 @@ class TestSimSlip(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_sim_slip')
+        rason_rospy.init_node('test_sim_slip')
         cls.robot = SimRobot('faulty')
         assert cls.robot.wait_connected(), 'decomposer or simulator not listening'
 

@@ -15,6 +15,7 @@ import unittest
 
 import cv2
 import numpy as np
+import rason_rospy
 import rospy
 import rostest
 
@@ -82,7 +83,7 @@ class TestSimVision(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_sim_vision')
+        rason_rospy.init_node('test_sim_vision')
         cls.dim = rospy.get_param('~dim', False)
         cls.three = rospy.get_param('~three', False)
         cls.helper = SimRobot('helper')

@@ -8,6 +8,8 @@ import sys
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -23,7 +25,7 @@ class TestStartBarrier(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_start_barrier')
+        rason_rospy.init_node('test_start_barrier')
         cls.log = LogWatcher()
         assert cls.log.wait_ready(), 'not connected to every /rosout publisher'
         cls.bidders = []

@@ -6,6 +6,8 @@ import os
 import sys
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -20,7 +22,7 @@ class TestStopMasDeadline(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_stop_mas_deadline')
+        rason_rospy.init_node('test_stop_mas_deadline')
 
     def test_the_agents_run_until_the_deadline_and_no_longer(self):
         # no shutdown grace: what runs after the deadline would be the grace's, not the deadline's

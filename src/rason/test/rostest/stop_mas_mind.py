@@ -10,6 +10,7 @@ import tempfile
 import unittest
 
 import rosgraph
+import rason_rospy
 import rospy
 import rostest
 
@@ -34,7 +35,7 @@ class TestStopMasMind(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_stop_mas_mind')
+        rason_rospy.init_node('test_stop_mas_mind')
 
     def test_the_last_state_is_published_recorded_and_replayed(self):
         received = []

@@ -11,6 +11,8 @@ import threading
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -69,7 +71,7 @@ class TestSynthesizer(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_synthesizer')
+        rason_rospy.init_node('test_synthesizer')
         cls.log = LogWatcher()
         cls.perceptions = Perceptions()
         cls.odom = rospy.Publisher('odom', Odometry, queue_size=100)

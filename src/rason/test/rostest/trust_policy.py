@@ -7,6 +7,8 @@ import os
 import sys
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 
@@ -28,7 +30,7 @@ class TestTrustPolicy(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_trust_policy')
+        rason_rospy.init_node('test_trust_policy')
         cls.log = LogWatcher()
         cls.r1 = Robot('robot1')
         cls.r2 = Robot('robot2')  # carol

@@ -12,6 +12,7 @@ import threading
 import unittest
 
 import rosgraph
+import rason_rospy
 import rospy
 import rostest
 from geometry_msgs.msg import PoseStamped
@@ -29,7 +30,7 @@ class TestTurtlebot2Profile(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_turtlebot2_profile')
+        rason_rospy.init_node('test_turtlebot2_profile')
         cls.lock = threading.Lock()
         cls.poses = []
         cls.graph = None

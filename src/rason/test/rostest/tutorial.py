@@ -17,6 +17,7 @@ import time
 import unittest
 
 import rosbag
+import rason_rospy
 import rospy
 import rostest
 from geometry_msgs.msg import PoseStamped
@@ -39,7 +40,7 @@ class TestTutorial(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_tutorial')
+        rason_rospy.init_node('test_tutorial')
         cls.lock = threading.Lock()
         cls.poses = []     # (x, y) true poses in the world
         cls.actions = []   # rason_msgs/Action on /rover/jason/action

@@ -12,6 +12,7 @@ import time
 import unittest
 
 import actionlib
+import rason_rospy
 import rospy
 import rostest
 
@@ -94,7 +95,7 @@ class TestWiring(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_wiring')
+        rason_rospy.init_node('test_wiring')
         cls.log = LogWatcher()
         cls.speech = Recorder()
         rospy.Subscriber('speech', String, lambda m: cls.speech.add(m.data), queue_size=10)

@@ -10,6 +10,7 @@ progress; no physics.
 import threading
 import time
 
+import rason_rospy
 import rospy
 from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
@@ -18,7 +19,7 @@ from rason_bench.preempt import integrate, yaw_quaternion
 
 
 def main():
-    rospy.init_node('bench_base')
+    rason_rospy.init_node('bench_base')
     rate = float(rospy.get_param('~rate', 50.0))
     frame_id = rospy.get_param('~frame_id', 'odom')
     child_frame_id = rospy.get_param('~child_frame_id', 'base_footprint')

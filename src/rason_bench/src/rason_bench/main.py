@@ -101,10 +101,11 @@ def main(argv=None):
     started = time.monotonic()
     failed = []
     try:
+        import rason_rospy
         import rospy
         from rason_bench import behaviour, experiments, fleet, fleet_sim, hostile, robot_budget, startup
         from rason_bench.harness import Harness
-        rospy.init_node('rason_bench', disable_signals=True)
+        rason_rospy.init_node('rason_bench', disable_signals=True)
         harness = Harness()
         p = results['params']
 

@@ -16,6 +16,7 @@ messages it published, and waits to be stopped (the last message still goes out)
 """
 import time
 
+import rason_rospy
 import rospy
 from rason_msgs.msg import Perception
 
@@ -47,7 +48,7 @@ class Marks(object):
 
 
 def main():
-    rospy.init_node('bench_synth')
+    rason_rospy.init_node('bench_synth')
     count = int(rospy.get_param('~count', 10))
     rate = float(rospy.get_param('~rate', 50.0))
     source = rospy.get_param('~source', rospy.get_name().split('/')[-1] + '_burst')

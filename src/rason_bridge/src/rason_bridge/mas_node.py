@@ -16,6 +16,7 @@ import time
 
 import jpype
 import rospkg
+import rason_rospy
 import rospy
 from rospy.impl.rosout import RosOutHandler
 from rason_msgs.msg import Action, Event, MindState
@@ -241,7 +242,7 @@ def main(argv=None):
     """``rosrun rason_bridge rason_mas FILE.mas2j``; its ~params: ``src/rason_bridge/PARAMETERS.md``.
     Publishes the hosted agents' names on the ``~agents`` parameter."""
     args = rospy.myargv(argv if argv is not None else sys.argv)
-    rospy.init_node('rason_mas')
+    rason_rospy.init_node('rason_mas')
     if len(args) != 2:
         rospy.logfatal('usage: rosrun rason_bridge rason_mas FILE.mas2j')
         return 2

@@ -45,11 +45,12 @@ def replay(argv):
 
 
 def live():
+    import rason_rospy
     import rospy
     from rason_dashboard.live import LiveFeed
     from rason_dashboard.server import DashboardServer
     from rason_dashboard.timeline import Timeline
-    rospy.init_node('rason_dashboard')
+    rason_rospy.init_node('rason_dashboard')
     bind = str(rospy.get_param('~bind', DEFAULT_BIND))
     port = rospy.get_param('~port', DEFAULT_PORT)
     if isinstance(port, bool) or not isinstance(port, int) or not 0 <= port <= 65535:

@@ -18,6 +18,7 @@ import sys
 import threading
 
 import actionlib
+import rason_rospy
 import rospy
 from actionlib_msgs.msg import GoalStatus
 from rason_decomposer.node import Decomposer
@@ -170,7 +171,7 @@ class GenericDecomposer(object):
 
 
 def main():
-    rospy.init_node('generic_decomposer')
+    rason_rospy.init_node('generic_decomposer')
     node = rospy.get_name().split('/')[-1]
     try:
         mappings = config.parse(layout.wiring_param('actions', rospy), Resolver(),

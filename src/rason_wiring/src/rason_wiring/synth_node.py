@@ -12,6 +12,7 @@ import threading
 import time
 
 import rosgraph
+import rason_rospy
 import rospy
 from rason_msgs.msg import Perception
 
@@ -87,7 +88,7 @@ class GenericSynthesizer(object):
 
 
 def main():
-    rospy.init_node('generic_synthesizer')
+    rason_rospy.init_node('generic_synthesizer')
     node = rospy.get_name().split('/')[-1]
     try:
         syntheses = synth.parse(layout.wiring_param('perceptions', rospy), Resolver(),

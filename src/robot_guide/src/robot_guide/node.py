@@ -28,6 +28,7 @@ import math
 import sys
 import threading
 
+import rason_rospy
 import rospy
 import tf2_ros
 from geometry_msgs.msg import PoseStamped, Twist
@@ -230,7 +231,7 @@ class RobotGuideNode(object):
 
 def main():
     """Entry point of ``robot_guide_node``: reads ~params, then spins."""
-    rospy.init_node('robot_guide')
+    rason_rospy.init_node('robot_guide')
     values = {key: rospy.get_param('~' + key, default)
               for key, default in settings.DEFAULTS.items()}
     try:

@@ -56,6 +56,7 @@ Private parameters (defaults in ``config/vision_synth.yaml`` and :data:`detector
 import threading
 import time
 
+import rason_rospy
 import rospy
 from rason_msgs.msg import Perception, RobotSighting, RobotSightings
 from sensor_msgs.msg import CameraInfo, Image, PointCloud2
@@ -240,7 +241,7 @@ class VisionSynthNode(object):
 
 def main():
     """Entry point of ``vision_synth_node``: reads ~params, then spins."""
-    rospy.init_node('vision_synth')
+    rason_rospy.init_node('vision_synth')
     options = {key: rospy.get_param('~' + key, default)
                for key, default in detector.DEFAULTS.items()}
     colors = rospy.get_param('~colors', detector.DEFAULT_COLORS)
