@@ -114,6 +114,38 @@ class LogWatcher(object):
                 self._cond.wait(min(left, 0.1))
 
 
+class ScreenOutput(object):
+    """The lines a process prints (stdout and stderr): for what a node says at its start,
+    which can be over before any rosout connection is made."""
+
+    def __init__(self, proc):
+        self.proc = proc
+        self._lines = []
+        self._cond = threading.Condition()
+        threading.Thread(target=self._read, daemon=True).start()
+
+    def _read(self):
+        for line in self.proc.stdout:
+            with self._cond:
+                self._lines.append(line.rstrip('\n'))
+                self._cond.notify_all()
+
+    def lines(self, pattern):
+        with self._cond:
+            return [l for l in self._lines if re.search(pattern, l)]
+
+    def wait_for(self, pattern, timeout=20.0):
+        """The lines matching ``pattern`` once there is one; empty after ``timeout`` s without."""
+        deadline = time.monotonic() + timeout
+        with self._cond:
+            while True:
+                found = [l for l in self._lines if re.search(pattern, l)]
+                left = deadline - time.monotonic()
+                if found or left <= 0:
+                    return found
+                self._cond.wait(min(left, 0.1))
+
+
 def feedback(agent, result, action_id, event_type=Event.ACTION_FEEDBACK):
     """An Event message as a decomposer sends it."""
     return Event(agent=agent, event_type=event_type, parameters=[result, str(action_id)])

@@ -12,12 +12,15 @@ import sys
 import time
 import unittest
 
+import rason_rospy
+
 import rospy
 import rostest
 from sensor_msgs.msg import BatteryState
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'nodes'))
-from rason_testing import HERE, LogWatcher, run_launch, start_mas, stop_mas  # noqa: E402
+from rason_testing import (HERE, LogWatcher, ScreenOutput, node_command, run_launch, start_mas,  # noqa: E402
+                           stop_mas)
 
 WRAPPED = os.path.join(HERE, 'config', 'wrapped_perceptions.yaml')
 
@@ -40,7 +43,7 @@ class TestLoudMistakes(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('test_loud_mistakes')
+        rason_rospy.init_node('test_loud_mistakes')
         cls.log = LogWatcher()
 
     def test_a_node_that_cannot_start_ends_run_launch_with_its_fatal_line_last(self):
@@ -85,14 +88,17 @@ class TestLoudMistakes(unittest.TestCase):
         rospy.set_param('/loud3/generic_synthesizer/perceptions', BATTERY)
         battery = rospy.Publisher('/loud3/battery', BatteryState, queue_size=1, latch=True)
         battery.publish(BatteryState(percentage=0.5))
-        synth = subprocess.Popen(['rosrun', 'rason_wiring', 'generic_synthesizer', '__ns:=/loud3'])
+        # its screen: the warning comes at once, before a rosout connection may be made
+        synth = ScreenOutput(subprocess.Popen(node_command('rason_wiring', 'generic_synthesizer') + ['__ns:=/loud3'],
+                                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                              universal_newlines=True))
         mas = start_mas('loud3', os.path.join(HERE, 'agents', 'sleeper.mas2j'), expected_sources='[battery]',
                         expect_within=1.0)
         try:
-            found = self.log.wait_for(
-                r'^generic_synthesizer: battery: /loud3/battery is published as sensor_msgs/BatteryState, but the '
-                r'entry reads it as std_msgs/Float32: it perceives nothing from it until the entry\'s type is '
-                r'sensor_msgs/BatteryState$', timeout=30, node='/loud3/generic_synthesizer')
+            found = synth.wait_for(
+                r'^\[WARN\] \[[0-9.]+\]: generic_synthesizer: battery: /loud3/battery is published as '
+                r'sensor_msgs/BatteryState, but the entry reads it as std_msgs/Float32: it perceives nothing from it '
+                r'until the entry\'s type is sensor_msgs/BatteryState$', timeout=30)
             self.assertTrue(found, 'no type warning')
             found = self.log.wait_for(r"^perception source 'battery' not heard within 1 s of the start "
                                       r"\(~expected_sources\)", timeout=40, node='/loud3/rason_mas')
@@ -101,8 +107,8 @@ class TestLoudMistakes(unittest.TestCase):
             self.assertEqual(len(self.log.lines(r"^perception source 'battery'")), 1, 'warned once')
         finally:
             stop_mas(mas)
-            synth.terminate()
-            synth.wait(timeout=20)
+            synth.proc.terminate()
+            synth.proc.wait(timeout=20)
 
 
 if __name__ == '__main__':
