@@ -94,11 +94,12 @@ ranked(Offers, Ranked) :- not firstAnswerWins & .sort(Offers, Ranked).
    !lose(Id, Task, P).
 +!awardAnswered(_, _, _) <- true.     // lost meanwhile (left, failed): already handled
 
-// The contractor is lost to this contract: stop what I do with it, award the next.
+// The contractor is lost to this contract: stop what I do with it, award the next. The revoke
+// is not waited for: to a robot out of reach it is delivered only when it is back.
 +!lose(Id, Task, P)
 <- -awarded(Id, Task, P);
    .drop_desire(contracted(Task, P));
-   !sendOrFail(P, achieve, revoke(Id));
+   !!sendOrFail(P, achieve, revoke(Id));
    !awardNext(Id).
 
 +!contractFailed(Task) : awarded(Id, Task, P) <- !lose(Id, Task, P).

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The case study as one fleet program on simulated robots (issue 34): fleet_case_study.launch,
-every robot running agents/fleet/fleet_robot.mas2j. The test reads the agents' messages on
-/rason/messages (the contract net's calls, bids and awards) and the diagnoses on /diagnostics.
+every robot running agents/fleet/fleet_robot.mas2j, over either fleet channel. The test reads
+what the callers print (the contract net's awards, who took them, who found them) on /rosout
+and the diagnoses on /diagnostics.
 
 Private parameters:
   ~diagnoses        "agent:component ..." : each faulty robot's agent and the component its
@@ -22,6 +23,7 @@ Private parameters:
 """
 import math
 import os
+import re
 import signal
 import threading
 import time
@@ -29,17 +31,22 @@ import unittest
 from xmlrpc.client import ServerProxy
 
 import rosgraph
+import rason_rospy
 import rospy
 import rostest
 from diagnosis_reporter.report import MISSION_STATUS_NAME, STATUS_NAME
 from diagnostic_msgs.msg import DiagnosticArray
 from geometry_msgs.msg import PoseStamped
-from rason_campaign.fleet_judge import AWARD  # award(contract(...),task(...))
-from rason_msgs.msg import AgentMessage
+from rosgraph_msgs.msg import Log
 
 
 MISSION_LENGTH = 1.0     # metres ahead of each robot's start (the thesis's mission)
 FLEET = ['r%d' % k for k in range(1, 9)]     # rason_sim's fleet.yaml
+# the lines of agents/fleet/contract_net.asl and case_study/faulty_dialogue.asl the test reads
+AGENT_LINE = re.compile(r'^\[(\w+)\] (.*)$')
+AWARDING = re.compile(r'^awarding (\w+)\(.* to (\w+) \(bid ')
+TOOK = re.compile(r'^(\w+) took (\w+)\(')
+FOUND = re.compile(r'^(\w+) found me, ')
 
 
 def robot_of(agent):
@@ -82,27 +89,32 @@ class TrueTrack(object):
 
 
 class FleetRun(object):
-    """The agent messages (with the wall time each was heard), the first diagnosis and mission
-    outcome of each agent, and the true poses of every robot of the fleet (``tracks``, by robot)."""
+    """What the callers said (with the wall time each line was heard: their awards, the robots
+    that took them, the helpers that found them), the first diagnosis and mission outcome of
+    each agent, and the true poses of every robot of the fleet (``tracks``, by robot). The
+    callers' lines come from /rosout, which is the same on either fleet channel (over MQTT the
+    agents' messages never reach ROS)."""
 
     def __init__(self):
         self._lock = threading.Lock()
-        self._messages = []
+        self._lines = []         # (heard at, agent, the rest of its line)
         self._diagnoses = {}
         self._missions = {}
         self.tracks = {robot: TrueTrack() for robot in FLEET}
         for robot in FLEET:
             rospy.Subscriber('/%s/true_pose' % robot, PoseStamped, self._on_pose, robot, queue_size=50)
-        rospy.Subscriber('/rason/messages', AgentMessage, self._on_message, queue_size=1000)
+        rospy.Subscriber('/rosout', Log, self._on_log, queue_size=None)
         rospy.Subscriber('/diagnostics', DiagnosticArray, self._on_diagnostics, queue_size=100)
 
     def _on_pose(self, msg, robot):
         with self._lock:
             self.tracks[robot].add(planar(msg))
 
-    def _on_message(self, msg):
-        with self._lock:
-            self._messages.append((time.monotonic(), msg.sender, msg.receiver, msg.content))
+    def _on_log(self, msg):
+        match = AGENT_LINE.match(msg.msg)
+        if match:
+            with self._lock:
+                self._lines.append((time.monotonic(), match.group(1), match.group(2)))
 
     def _on_diagnostics(self, msg):
         with self._lock:
@@ -117,8 +129,14 @@ class FleetRun(object):
                         track.at_end = track.latest
 
     def messages(self):
+        """The agents' lines so far, for a failure's context."""
         with self._lock:
-            return list(self._messages)
+            return ['[%s] %s' % (agent, text) for _, agent, text in self._lines]
+
+    def _said(self, agent, pattern):
+        with self._lock:
+            lines = list(self._lines)
+        return [(t, pattern.match(text)) for t, a, text in lines if a == agent and pattern.match(text)]
 
     def diagnosis(self, agent):
         with self._lock:
@@ -129,25 +147,16 @@ class FleetRun(object):
             return self._missions.get(agent)
 
     def awards(self, caller, task='help'):
-        """(heard at, robot) of each award of a ``task`` (help, guide, reach) the caller sent, in order."""
-        return [(t, r) for t, r, _ in self._awards(caller, task)]
-
-    def _awards(self, caller, task):
-        found = []
-        for t, s, r, c in self.messages():
-            match = AWARD.match(c) if s == caller else None
-            if match and match.group(2) == task:
-                found.append((t, r, match.group(1)))
-        return found
+        """(heard at, robot) of each award of a ``task`` (help, guide, reach) the caller made, in order."""
+        return [(t, m.group(2)) for t, m in self._said(caller, AWARDING) if m.group(1) == task]
 
     def helpers(self, caller, task='help'):
-        """The robots that accepted the caller's award of a ``task``, in order."""
-        awarded = {(r, contract) for _, r, contract in self._awards(caller, task)}
-        return [s for _, s, r, c in self.messages()
-                if r == caller and c.startswith('accepted(') and (s, c[len('accepted('):-1]) in awarded]
+        """The robots that took the caller's award of a ``task``, in order."""
+        return [m.group(1) for _, m in self._said(caller, TOOK) if m.group(2) == task]
 
-    def said(self, sender, receiver, prefix):
-        return [t for t, s, r, c in self.messages() if s == sender and r == receiver and c.startswith(prefix)]
+    def found(self, helper, caller):
+        """Whether the caller heard ``helper`` found it."""
+        return any(m.group(1) == helper for _, m in self._said(caller, FOUND))
 
 
 def await_condition(what, seconds, condition, messages):
@@ -183,7 +192,7 @@ class TestFleetCaseStudy(unittest.TestCase):
         killed_helper = None
         if victim_caller:
             await_condition('%s to be found by the robot it awarded' % victim_caller, timeout,
-                            lambda: any(run.said(h, victim_caller, 'found(') for h in run.helpers(victim_caller)),
+                            lambda: any(run.found(h, victim_caller) for h in run.helpers(victim_caller)),
                             run.messages)
             killed_helper = helper = run.helpers(victim_caller)[-1]
             killed_node = kill_agents_of(helper)
@@ -208,7 +217,7 @@ class TestFleetCaseStudy(unittest.TestCase):
                          'each caller had a helper of its own: %s' % last_helpers)
         for agent, helper in last_helpers.items():
             self.assertNotIn(helper, expected, '%s was watched by %s, a faulty robot' % (agent, helper))
-            self.assertTrue(run.said(helper, agent, 'found('), '%s never found %s' % (helper, agent))
+            self.assertTrue(run.found(helper, agent), '%s never found %s' % (helper, agent))
         if victim_caller:
             self.assertNotEqual(last_helpers[victim_caller], killed_helper, 'a killed robot cannot have helped to the end')
 
@@ -241,5 +250,5 @@ class TestFleetCaseStudy(unittest.TestCase):
 
 
 if __name__ == '__main__':
-    rospy.init_node('test_fleet_case_study')
+    rason_rospy.init_node('test_fleet_case_study')
     rostest.rosrun('rason', 'fleet_case_study', TestFleetCaseStudy)
