@@ -4,12 +4,14 @@ plumbing)."""
 import logging
 
 import rospy
+from rosgraph.roslogging import RosStreamHandler, _color_reset, _logging_to_rospy_names
 from rosgraph_msgs.msg import Log
 from rospy.impl.registration import get_topic_manager
 from rospy.impl.rosout import RosOutHandler
 
 from rason_bridge.log_frames import LogFrames
 from rason_bridge.rosout_writer import RosoutWriter
+from rason_bridge.screen_lines import emit_batch
 
 _LEVELS = {'debug': Log.DEBUG, 'info': Log.INFO, 'warn': Log.WARN, 'error': Log.ERROR}
 
@@ -25,8 +27,12 @@ def rosout_writer():
         except Exception as e:  # as rospy's handler: the lines still went to the screen and the file
             logging.getLogger('rospy.rosout').error('Unable to report rosout: %s', e)
 
+    def screen(handler, records):
+        emit_batch(handler, records, _logging_to_rospy_names, _color_reset, rospy.get_name())
+
     return RosoutWriter(logging.getLogger('rosout'), RosOutHandler, publish, lambda: get_topic_manager().get_topics(),
-                        lambda: rospy.get_param_cached('/rosout_disable_topics_generation', False))
+                        lambda: rospy.get_param_cached('/rosout_disable_topics_generation', False),
+                        emitters={RosStreamHandler: screen})
 
 
 def _publish_frames(pub, frames, lines, topics):

@@ -28,10 +28,14 @@ class RosoutWriter(object):
     :param topics: ``topics()`` -> the node's topics, which a rosout message carries
     :param topics_disabled: ``topics_disabled()`` -> the parameter; asked at most every
         :data:`PARAM_PERIOD` s (then rosout messages carry no topics)
+    :param emitters: ``{handler class: emit(handler, records)}``: how a batch goes to a handler
+        of that class (e.g. :func:`rason_bridge.screen_lines.emit_batch` for the screen's)
     """
 
-    def __init__(self, logger, rosout_handler, publish, topics, topics_disabled, clock=time.monotonic):
+    def __init__(self, logger, rosout_handler, publish, topics, topics_disabled, clock=time.monotonic,
+                 emitters=None):
         self._logger = logger
+        self._emitters = list((emitters or {}).items())
         self._rosout_handler = rosout_handler
         self._publish = publish
         self._topics = topics
@@ -51,7 +55,10 @@ class RosoutWriter(object):
         if not kept:
             return
         for handler in handlers:
-            if type(handler) in _BATCHED:
+            emit = next((e for cls, e in self._emitters if isinstance(handler, cls)), None)
+            if emit is not None:
+                emit(handler, records)
+            elif type(handler) in _BATCHED:
                 _emit_batch(handler, records)
             else:
                 for record in records:
