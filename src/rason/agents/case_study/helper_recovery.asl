@@ -22,10 +22,6 @@ reachGoal(R, F, L, pose(X, Y, T), Goal, Cost)
     :- locatedAs(R, X, Y, T) & pos(HX, HY, HT)
      & compose(pose(X, Y, T), pose(F, L, 0), Goal) & distance(pose(HX, HY, HT), Goal, Cost).
 
-// The side of a robot (1 left, -1 right) on which I am, from my lateral offset L.
-sideOf(L, 1) :- L >= 0.
-sideOf(L, -1) :- L < 0.
-
 /* Guiding: keep the robot centred in the camera; robot_guide streams its pose */
 
 +!guideMe[source(R)] <- !startGuiding(R).
@@ -84,7 +80,7 @@ sideOf(L, -1) :- L < 0.
 
 +!takeOver(Task, R)
 : offered(Task, Robot, pose(GX, GY, GT)) & pos(HX, HY, HT) & detour(Ahead, Beside)
-  & relative(Robot, pose(HX, HY, HT), pose(_, HL, _)) & sideOf(HL, Side)
+  & relative(Robot, pose(HX, HY, HT), pose(_, HL, _)) & signOf(HL, Side)   // the side I am on
   & compose(Robot, pose(Ahead, Side * Beside, 0), pose(WX, WY, _))
 <- .print("Taking over the mission of ", R, ": to (", GX, ", ", GY, ")");
     goto(WX, WY);

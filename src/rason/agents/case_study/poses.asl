@@ -18,3 +18,8 @@ relative(A, B, R) :- inverse(A, IA) & compose(IA, B, R).
 
 distance(pose(X1, Y1, _), pose(X2, Y2, _), D)
     :- D = math.sqrt((X2 - X1) * (X2 - X1) + (Y2 - Y1) * (Y2 - Y1)).
+
+// signOf(V, S): S is 1 when V >= 0, -1 when V < 0 (which side of a robot a point lies on:
+// ahead or behind from its forward offset, left or right from its lateral one).
+signOf(V, 1) :- V >= 0.
+signOf(V, -1) :- V < 0.

@@ -98,10 +98,8 @@ sideOn(Caller, Me)
 // The vantage point on my side of the caller: viewDistance ahead of it, or behind it. (Not
 // viewpoint/3: helper_dialogue.asl keeps a belief of that name, and removes it.)
 vantagePoint(Caller, Me, V)
-    :- relative(Caller, Me, pose(F, _, _)) & viewDistance(D) & aheadOrBehind(F, Sign)
+    :- relative(Caller, Me, pose(F, _, _)) & viewDistance(D) & signOf(F, Sign)
      & compose(Caller, pose(Sign * D, 0, 0), V).
-aheadOrBehind(F, 1) :- F >= 0.
-aheadOrBehind(F, -1) :- F < 0.
 
 // The robot watching me: the one I awarded the help, from the award on (its found(Me) may
 // come before its acceptance is handled).

@@ -52,7 +52,7 @@ class TestJasonRunnerParity(unittest.TestCase):
         jason, rason = self.both(POSES_TESTS, 'poses_tests')
         self.assertEqual(jason.returncode, 0, jason.text())
         self.assertEqual(rason.returncode, 0, rason.text())
-        self.assertEqual(self.summary(jason), '#10 tests executed, #10 PASSED and #0 failed.', jason.text())
+        self.assertEqual(self.summary(jason), '#13 tests executed, #13 PASSED and #0 failed.', jason.text())
         self.assertEqual(self.summary(rason), self.summary(jason))
         # test by test, the same lines
         self.assertEqual(agent_lines(rason.output, 'test_poses'), agent_lines(jason.output, 'test_poses'))

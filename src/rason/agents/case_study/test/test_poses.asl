@@ -28,3 +28,12 @@
 +!test_distance_ignores_the_heading
     <- ?distance(pose(0, 0, 1), pose(3, 4, -2), D);
        !assert_equals(5, D, 0.000001).
+
+@[test]
++!test_sign_of_counts_zero_as_positive
+    <- ?signOf(0.3, Left);
+       !assert_equals(1, Left);
+       ?signOf(0, Ahead);
+       !assert_equals(1, Ahead);
+       ?signOf(-0.3, Right);
+       !assert_equals(-1, Right).

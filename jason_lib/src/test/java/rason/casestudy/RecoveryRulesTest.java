@@ -128,9 +128,9 @@ class RecoveryRulesTest {
     }
 
     @Test
-    void theHelperDetoursOnItsOwnSideOfTheRobot() throws Exception {
+    void theHelperTellsWhichSideOfTheRobotItIsOnForItsDetour() throws Exception {
         Agent ag = load("helper.asl");
-        assertEquals(1.0, number(ask(ag, "sideOf(0.3, S)"), "S"), EPS);
-        assertEquals(-1.0, number(ask(ag, "sideOf(-0.3, S)"), "S"), EPS);
+        assertEquals(1.0, number(ask(ag, "signOf(0.3, S)"), "S"), EPS);
+        assertEquals(-1.0, number(ask(ag, "signOf(-0.3, S)"), "S"), EPS);
     }
 }
