@@ -105,10 +105,13 @@ def text(fleet):
         out += ['Message rate (loopback): a simulated robot (`SimulatedFleet`) sends `achieve echo(Run, Seq)` to bob '
                 'on a fixed schedule for %g s per step; bob answers each with `achieve echoed(Run, Seq)`; '
                 'each answer timed from when its message was due (an unanswered one counts as slower than any).'
-                % rate['seconds_per_step'], '',
+                % rate['seconds_per_step'] + (' First a warm-up of %g s a step, while both JVMs compile the message '
+                                              'path (its steps marked "warm-up", not counted).'
+                                              % rate['warmup_seconds_per_step'] if rate.get('warmup') else ''), '',
                 _row(['offered /s', 'achieved /s', 'answered', 'p50 ms', 'p99 ms', 'max ms']), _row(['---'] * 6)]
-        for s in rate['steps']:
-            out.append(_row(['%.0f' % s['rate'], '%.0f' % (s['achieved_rate'] or 0),
+        for s in [dict(w, warmup=True) for w in rate.get('warmup', [])] + rate['steps']:
+            out.append(_row(['%.0f%s' % (s['rate'], ' (warm-up)' if s.get('warmup') else ''),
+                             '%.0f' % (s['achieved_rate'] or 0),
                              '%d of %d' % (s['answered'], s['sent']), _ms(s['p50_ms']), _ms(s['p99_ms']),
                              _ms(s['max_ms'])]))
         out.append('')
