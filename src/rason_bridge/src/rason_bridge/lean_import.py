@@ -32,7 +32,6 @@ def without(name):
             del sys.modules[name]
 
 
-
 class _Deferred(types.ModuleType):
     """A module not run yet: the first attribute it lacks runs it (``__spec__`` and the other
     import attributes are set, so importing it again does not)."""
