@@ -6,6 +6,7 @@ every line while the parameter is unset (its cache keeps no "unset"); no rospy.
 
 A batch goes to a plain file or stream handler (the node's log file) as one write and one
 flush, and to /rosout as one publication of all its messages."""
+import contextlib
 import logging
 import logging.handlers
 import time
@@ -100,8 +101,7 @@ def _emit_batch(handler, records):
     records = [r for r in records if r.levelno >= handler.level and handler.filter(r)]
     if not records:
         return
-    handler.acquire()
-    try:
+    with emitting(handler, records[0]):
         text = ''.join(handler.format(r) + handler.terminator for r in records)
         if isinstance(handler, logging.FileHandler):
             _open(handler)
@@ -114,10 +114,19 @@ def _emit_batch(handler, records):
                 _open(handler)
         handler.stream.write(text)
         handler.flush()
+
+
+@contextlib.contextmanager
+def emitting(handler, record):
+    """Inside, a batch is written to ``handler`` as logging's handlers write a record: under the
+    handler's lock, an error handed to its ``handleError`` (with ``record``), not raised."""
+    handler.acquire()
+    try:
+        yield
     except RecursionError:
         raise
     except Exception:
-        handler.handleError(records[0])
+        handler.handleError(record)
     finally:
         handler.release()
 

@@ -11,6 +11,8 @@ import logging
 import os
 import time
 
+from rason_bridge.rosout_writer import emitting
+
 #: rosgraph's format when ROSCONSOLE_FORMAT is not set.
 DEFAULT_FORMAT = '[${severity}] [${time}]: ${message}'
 _MESSAGE = '\0'   # stands for ${message} while the other tags are filled in
@@ -73,16 +75,9 @@ def emit_batch(handler, records, names, reset, node, environ=os.environ, wall=ti
         if not runs or runs[-1][0] is not stream:
             runs.append([stream, []])
         runs[-1][1].append((colour, record.getMessage().join(parts) + '\n'))
-    handler.acquire()
-    try:
+    with emitting(handler, records[0]):
         for stream, lines in runs:
             if handler._colorize and hasattr(stream, 'isatty') and stream.isatty():
                 stream.write(''.join(colour + line + reset if colour else line for colour, line in lines))
             else:
                 stream.write(''.join(line for _, line in lines))
-    except RecursionError:
-        raise
-    except Exception:
-        handler.handleError(records[0])
-    finally:
-        handler.release()
