@@ -104,10 +104,11 @@ def run_jobs(jobs, lanes, log_dir, say=lambda line: print(line, flush=True), env
         job = next_job(pending, [entry[0] for entry in running.values()], lanes)
         if job is not None:
             pending.remove(job)
+            started = time.monotonic()  # before the start: Popen returns once the job runs
             with open(log_path(log_dir, job.name), 'w') as log:
                 proc = subprocess.Popen(job.argv, stdout=log, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
                                         cwd=REPOSITORY, env=env)
-            running[proc.pid] = (job, proc, time.monotonic())
+            running[proc.pid] = (job, proc, started)
             continue
         pid, status, usage = os.wait4(-1, 0)
         if pid not in running:
