@@ -130,10 +130,6 @@ class ScreenOutput(object):
                 self._lines.append(line.rstrip('\n'))
                 self._cond.notify_all()
 
-    def lines(self, pattern):
-        with self._cond:
-            return [l for l in self._lines if re.search(pattern, l)]
-
     def wait_for(self, pattern, timeout=20.0):
         """The lines matching ``pattern`` once there is one; empty after ``timeout`` s without."""
         deadline = time.monotonic() + timeout

@@ -278,14 +278,14 @@ def message_rate(place, key, seconds, log, search=None):
         wait_present(bob, ['sim0'], 90)
         warmup = []
         for rate in RATE_WARMUP_PER_S:
-            warmup.append(_step(_load(sim, rate, RATE_WARMUP_SECONDS), rate, log, ' (warm-up)'))
-        if warmup[-1]['p99_ms'] is None or warmup[-1]['p99_ms'] > RATE_P99_BOUND_MS:
+            step, p99 = _step(_load(sim, rate, RATE_WARMUP_SECONDS), rate, log, ' (warm-up)')
+            warmup.append(step)
+        if p99 > RATE_P99_BOUND_MS:
             _drain(sim)
         rate = search.next_rate()
         while rate is not None:
-            steps.append(_step(_load(sim, rate, seconds), rate, log))
-            p99 = steps[-1]['p99_ms']
-            p99 = math.inf if p99 is None else p99
+            step, p99 = _step(_load(sim, rate, seconds), rate, log)
+            steps.append(step)
             search.record(rate, p99)
             rate = search.next_rate()
             if p99 > RATE_P99_BOUND_MS and rate is not None:
@@ -296,7 +296,8 @@ def message_rate(place, key, seconds, log, search=None):
 
 
 def _step(run, rate, log, what=''):
-    """One load run as the report shows it (its answers' times left out)."""
+    """One load run as the report shows it (its answers' times left out), and its p99 (ms; inf
+    when it fell among the unanswered)."""
     p99 = fleetcalc.tail_ms(run['ms'], run['sent'], 99)
     s = fleetcalc.summary(run['ms'])
     step = dict((k, v) for k, v in run.items() if k != 'ms')
@@ -305,7 +306,7 @@ def _step(run, rate, log, what=''):
     log('  %6.0f/s offered (%.0f/s achieved): %d of %d answered, p50 %s ms, p99 %s ms%s' % (
         rate, run['achieved_rate'] or 0, run['answered'], run['sent'],
         '%.1f' % s['p50'] if s['n'] else '-', '%.1f' % p99 if p99 != math.inf else 'inf', what))
-    return step
+    return step, p99
 
 
 def _drain(sim, rounds=20):

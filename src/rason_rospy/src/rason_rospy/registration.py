@@ -10,11 +10,7 @@ publishers) after it. The subscriber then never connects, and nothing tells it s
 rospy only ever adds connections from these lists (a connection to a publisher that is gone
 ends on its own), so a list queued for a topic that still waits is merged with the waiting
 one: every publisher either names is connected to."""
-import threading
-
 from rospy.impl.registration import RegManager
-
-_lock = threading.Lock()
 
 
 def merged_update(updates, topic, uris):
@@ -32,6 +28,4 @@ def _publisher_update(self, resolved_name, uris):
 
 def mend_registration():
     """Make rospy's registration keep every publisher it is told of (idempotent)."""
-    with _lock:
-        if RegManager.publisher_update is not _publisher_update:
-            RegManager.publisher_update = _publisher_update
+    RegManager.publisher_update = _publisher_update
